@@ -1,0 +1,76 @@
+# mpsph — build, test, run, validate, bench.
+# Clusters: make MPICC=mpicc HDF5_DIR=/opt/hdf5 METIS_DIR=/opt/metis [YAML_DIR=...]
+
+MPICC  ?= mpicc
+ARCH   ?= portable
+PYTHON ?= $(shell test -x /usr/bin/python3 && echo /usr/bin/python3 || echo python3)
+MPIRUN ?= scripts/mpirun
+NP     ?= 2
+
+ifdef HDF5_DIR
+  HDF5_CFLAGS := -I$(HDF5_DIR)/include
+  HDF5_LIBS   := -L$(HDF5_DIR)/lib -Wl,-rpath,$(HDF5_DIR)/lib -lhdf5
+else
+  HDF5_CFLAGS := $(shell pkg-config --cflags hdf5-mpi 2>/dev/null)
+  HDF5_LIBS   := $(shell pkg-config --libs hdf5-mpi 2>/dev/null)
+endif
+ifdef METIS_DIR
+  METIS_CFLAGS := -I$(METIS_DIR)/include
+  METIS_LIBS   := -L$(METIS_DIR)/lib -Wl,-rpath,$(METIS_DIR)/lib -lmetis
+else
+  METIS_CFLAGS := $(shell pkg-config --cflags metis 2>/dev/null)
+  METIS_LIBS   := $(shell pkg-config --libs metis 2>/dev/null || echo -lmetis)
+endif
+ifdef YAML_DIR
+  YAML_CFLAGS := -I$(YAML_DIR)/include
+  YAML_LIBS   := -L$(YAML_DIR)/lib -Wl,-rpath,$(YAML_DIR)/lib -lyaml
+else
+  YAML_CFLAGS := $(shell pkg-config --cflags yaml-0.1 2>/dev/null)
+  YAML_LIBS   := $(shell pkg-config --libs yaml-0.1 2>/dev/null || echo -lyaml)
+endif
+
+OPT_portable := -O2 -ftree-vectorize
+OPT_native   := -O3 -march=native
+VERSION := $(shell git describe --always --dirty 2>/dev/null || echo unknown)
+
+CFLAGS  ?= $(OPT_$(ARCH)) -g
+CFLAGS  += -std=c11 -D_POSIX_C_SOURCE=200809L -Wall -Wextra -Werror -Iinclude \
+           -DMPSPH_VERSION='"$(VERSION)"' $(HDF5_CFLAGS) $(METIS_CFLAGS) $(YAML_CFLAGS)
+LDLIBS  := $(HDF5_LIBS) $(METIS_LIBS) $(YAML_LIBS) -lm
+
+SRC      := $(wildcard src/*.c)
+LIB_OBJ  := $(patsubst src/%.c,build/obj/%.o,$(filter-out src/main.c,$(SRC)))
+TEST_SRC := $(wildcard tests/test_*.c)
+TEST_BIN := $(patsubst tests/%.c,build/tests/%,$(TEST_SRC))
+
+.PHONY: all deps test run validate bench fuzz clean
+all: build/mpsph $(TEST_BIN)
+
+deps:
+	@scripts/install-deps
+
+build/obj/%.o: src/%.c $(wildcard include/*.h) | build/obj
+	$(MPICC) $(CFLAGS) -c $< -o $@
+
+build/libmpsph.a: $(LIB_OBJ)
+	ar rcs $@ $^
+
+build/mpsph: build/obj/main.o build/libmpsph.a
+	$(MPICC) $(CFLAGS) $^ -o $@ $(LDLIBS)
+
+build/tests/%: tests/%.c tests/check.h build/libmpsph.a | build/tests
+	$(MPICC) $(CFLAGS) -Itests $< build/libmpsph.a -o $@ $(LDLIBS)
+
+build/obj build/tests:
+	mkdir -p $@
+
+test: deps
+	@$(MAKE) --no-print-directory all
+	@PYTHON=$(PYTHON) scripts/run-tests
+
+run: deps
+	@$(MAKE) --no-print-directory build/mpsph
+	@PYTHON=$(PYTHON) NP=$(NP) scripts/run-default
+
+clean:
+	rm -rf build

@@ -1,0 +1,105 @@
+/* case.h — the resolved description of a simulation case (from case.yaml + --set overrides). */
+#ifndef MPSPH_CASE_H
+#define MPSPH_CASE_H
+
+#include <stddef.h>
+
+#define CASE_MAX_NAME 64
+#define CASE_MAX_PHASES 8
+#define CASE_MAX_REGIONS 32
+#define CASE_MAX_WALLS 16
+#define CASE_MAX_PROBES 64
+#define CASE_MAX_VERTICES 64
+
+enum scheme_kind { SCHEME_DELTA_PLUS = 0, SCHEME_DELTA_SPH, SCHEME_SAME_PHASE_CONTINUITY,
+                   SCHEME_GENERALIZED_DISSIPATION, SCHEME_RIEMANN };
+enum kernel_kind { KERNEL_GAUSSIAN = 0, KERNEL_WENDLAND_C2 };
+enum shape_kind { SHAPE_BOX = 0, SHAPE_CIRCLE, SHAPE_POLYGON };
+enum slip_kind { SLIP_FREE = 0, SLIP_NO };
+enum fluid_side { FLUID_INSIDE = 0, FLUID_OUTSIDE };
+enum shifting_kind { SHIFTING_NONE = 0, SHIFTING_CONSISTENT, SHIFTING_POSITION };
+enum probe_kind { PROBE_PRESSURE = 0 };
+enum init_pressure { INIT_PRESSURE_HYDROSTATIC = 0, INIT_PRESSURE_ZERO };
+
+/** A geometric shape: box {min,max}, circle {centre,radius} (disc in 2D, ball in 3D) or
+ *  polygon (2D only, vertices in order). Lengths in m. */
+struct shape {
+  enum shape_kind kind;
+  double min[3], max[3];                 /* box */
+  double centre[3], radius;              /* circle */
+  int n_vertices;                        /* polygon */
+  double vertex[CASE_MAX_VERTICES][2];
+};
+
+/** One fluid phase: Tait equation of state p = B((rho/rho0)^gamma - 1) + p_background. */
+struct phase {
+  char name[CASE_MAX_NAME];
+  double rho0;          /* reference density [kg/m^3] */
+  double c0;            /* numerical sound speed [m/s] */
+  double gamma;         /* polytropic exponent [-] */
+  double p_background;  /* background pressure [Pa] */
+  double viscosity;     /* dynamic viscosity [Pa s]; 0 = artificial viscosity only */
+  int incompressible;   /* liquid (receives the acoustic damper) */
+};
+
+/** A region filled with particles of one phase on the initial lattice. */
+struct fluid_region {
+  int phase;                 /* index into case.phases */
+  struct shape shape;
+  double velocity[3];        /* initial velocity [m/s] */
+};
+
+/** A wall: layers of fixed ghost particles along the boundary of a shape. */
+struct wall {
+  struct shape shape;
+  enum slip_kind slip;
+  enum fluid_side fluid_side;   /* inside: a tank (ghosts outside the shape); outside: an obstacle */
+};
+
+/** A probe read at probes.output interval. */
+struct probe {
+  char name[CASE_MAX_NAME];
+  enum probe_kind kind;
+  double position[3];
+};
+
+/** The complete case. Every field has its default filled in after case_load. */
+struct case_def {
+  char name[CASE_MAX_NAME];
+  char description[256];
+  char source_file[512];     /* path of the case file */
+  int dimension;             /* 2 or 3 */
+  enum scheme_kind scheme;
+  enum kernel_kind kernel;
+  double dx;                 /* initial particle spacing [m] */
+  double h_over_dx;          /* smoothing length / dx [-] */
+  double gravity[3];         /* [m/s^2] */
+  double t_end;              /* [s] */
+  double cfl;                /* [-] */
+  double output_interval;    /* snapshot interval [s]; 0 = first and last only */
+  double stats_interval;     /* stats.csv interval [s] */
+  double probes_interval;    /* probes.csv interval [s] */
+  double progress_interval;  /* wall-clock seconds between progress lines */
+  double domain_min[3], domain_max[3];   /* [m] */
+  int n_phases;
+  struct phase phases[CASE_MAX_PHASES];
+  int n_fluids;
+  struct fluid_region fluids[CASE_MAX_REGIONS];
+  int n_walls;
+  struct wall walls[CASE_MAX_WALLS];
+  int n_probes;
+  struct probe probes[CASE_MAX_PROBES];
+  enum init_pressure initial_pressure;
+  /* physics */
+  double delta;              /* delta-SPH density diffusion coefficient [-] */
+  double alpha;              /* artificial viscosity coefficient [-] */
+  double acoustic_damper;    /* alpha2 of the acoustic damper [-] */
+  enum shifting_kind shifting;
+  double u_max;              /* maximum expected velocity for shifting [m/s]; 0 = sqrt(g*height) */
+  /* parallel */
+  double repartition_threshold;  /* re-partition when (max-min)/mean load exceeds this */
+  long repartition_every;        /* force a re-partition every N steps (0 = only on imbalance) */
+  long max_steps;                /* stop after this many steps (0 = no limit) */
+};
+
+#endif

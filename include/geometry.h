@@ -1,0 +1,40 @@
+/* geometry.h — shapes of the case: inside tests, distance to the boundary, mirror points,
+ * ray lengths, lattice enumeration. Lengths in m. */
+#ifndef MPSPH_GEOMETRY_H
+#define MPSPH_GEOMETRY_H
+
+#include "case.h"
+
+/** 1 if point x lies inside the closed shape s (dim 2 or 3). */
+int shape_contains(const struct shape *s, int dim, const double *x);
+
+/** Nearest point q on the boundary of s to x; returns the distance |x - q|. */
+double shape_nearest_boundary(const struct shape *s, int dim, const double *x, double *q);
+
+/** Length of the part of the ray x + t*dir (t > 0, |dir| = 1) that lies inside s. */
+double shape_ray_length(const struct shape *s, int dim, const double *x, const double *dir);
+
+/** Axis-aligned bounding box of s, grown by `margin` on every side. */
+void shape_bbox(const struct shape *s, int dim, double margin, double *lo, double *hi);
+
+/** A Cartesian lattice of spacing dx whose nodes are origin + (i + 1/2) dx, covering [lo, hi]. */
+struct lattice {
+  int dim;
+  double dx, origin[3];
+  long first[3], count[3];   /* node index range per axis */
+};
+
+/** The lattice of spacing dx anchored at `anchor` covering the box [lo, hi]. */
+void lattice_cover(struct lattice *l, int dim, double dx, const double *anchor,
+                   const double *lo, const double *hi);
+
+/** Number of nodes of the lattice. */
+long lattice_size(const struct lattice *l);
+
+/** Position of node number n (row-major, x fastest). */
+void lattice_node(const struct lattice *l, long n, double *x);
+
+/** Anchor of the lattice used to fill shape s: box min, circle centre - radius, polygon bbox min. */
+void shape_anchor(const struct shape *s, int dim, double *anchor);
+
+#endif

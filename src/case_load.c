@@ -1,0 +1,747 @@
+/* case_load.c — read a YAML case file (plus --set overrides) into struct case_def, validating
+ * every key with one-line messages "<file>:<line>: <key.path>: <what is wrong>, <expected>",
+ * and write a resolved case back as YAML. */
+#include "case_load.h"
+
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "yaml_tree.h"
+
+#define PATH_LEN 256
+#define LIST_LEN 512
+#define REQUIRED NAN   /* the default of a required number */
+
+/* Enumeration spellings, in the order of the enums of case.h. */
+static const char *const SCHEME_NAMES[] = {"delta-plus", "delta-sph", "same-phase-continuity",
+                                           "generalized-dissipation", "riemann", NULL};
+static const char *const KERNEL_NAMES[] = {"gaussian", "wendland-c2", NULL};
+static const char *const SHAPE_NAMES[] = {"box", "circle", "polygon", NULL};
+static const char *const SLIP_NAMES[] = {"free", "no", NULL};
+static const char *const SIDE_NAMES[] = {"inside", "outside", NULL};
+static const char *const SHIFTING_NAMES[] = {"none", "consistent", "position", NULL};
+static const char *const PROBE_KIND_NAMES[] = {"pressure", NULL};
+static const char *const PRESSURE_NAMES[] = {"hydrostatic", "zero", NULL};
+static const char *const BOOL_NAMES[] = {"false", "true", NULL};
+
+/* The keys allowed in each mapping. */
+static const char *const ROOT_KEYS[] = {"name", "description", "dimension", "scheme", "kernel",
+                                        "resolution", "gravity", "time", "output", "domain",
+                                        "phases", "fluids", "walls", "physics", "initial",
+                                        "probes", "parallel", NULL};
+static const char *const RESOLUTION_KEYS[] = {"dx", "h_over_dx", NULL};
+static const char *const TIME_KEYS[] = {"end", "cfl", "max_steps", NULL};
+static const char *const OUTPUT_KEYS[] = {"interval", "stats_interval", "probes_interval",
+                                          "progress_interval", NULL};
+static const char *const BOX_KEYS[] = {"min", "max", NULL};
+static const char *const CIRCLE_KEYS[] = {"centre", "radius", NULL};
+static const char *const PHASE_KEYS[] = {"name", "rho0", "c0", "gamma", "p_background",
+                                         "viscosity", "incompressible", NULL};
+static const char *const FLUID_KEYS[] = {"phase", "box", "circle", "polygon", "velocity", NULL};
+static const char *const WALL_KEYS[] = {"box", "circle", "polygon", "slip", "fluid_side", NULL};
+static const char *const PHYSICS_KEYS[] = {"delta", "artificial_viscosity", "acoustic_damper",
+                                           "shifting", "u_max", NULL};
+static const char *const INITIAL_KEYS[] = {"pressure", NULL};
+static const char *const PROBE_KEYS[] = {"name", "kind", "position", NULL};
+static const char *const PARALLEL_KEYS[] = {"repartition_threshold", "repartition_every", NULL};
+
+static const char *const ALNUM = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789";
+static const char *const NAME_PUNCT = "._-";   /* case and phase names (a directory name) */
+static const char *const PROBE_PUNCT = "_";    /* probe names (a CSV column) */
+
+/* The values a number may take. */
+struct rule {
+  const char *expected;
+  double lo;
+  int lo_open;          /* lo itself excluded */
+  double hi;
+  int integer;
+};
+static const struct rule R_ANY = {"a number", -HUGE_VAL, 0, HUGE_VAL, 0};
+static const struct rule R_POSITIVE = {"a number > 0", 0, 1, HUGE_VAL, 0};
+static const struct rule R_NONNEGATIVE = {"a number >= 0", 0, 0, HUGE_VAL, 0};
+static const struct rule R_CFL = {"a number > 0 and <= 2", 0, 1, 2, 0};
+static const struct rule R_COUNT = {"an integer >= 0", 0, 0, 1e18, 1};
+static const struct rule R_DIMENSION = {"2 or 3", 2, 0, 3, 1};
+
+/* Loader state: where messages go and the dimension read so far. */
+struct ld {
+  char *err;
+  size_t err_len;
+  int dim;
+};
+
+/* A mapping being read; node NULL when absent (every key then takes its default). */
+struct map {
+  struct ld *ld;
+  const struct ynode *node;
+  const struct ynode *at;    /* node, or the nearest present ancestor: where missing keys are */
+  char path[PATH_LEN];
+};
+
+/* ---- messages ---- */
+
+static int vfail(struct ld *ld, const char *source, int line, const char *path, const char *fmt,
+                 va_list ap) {
+  if (ld->err_len == 0) return 1;
+  int k = snprintf(ld->err, ld->err_len, "%s:%d: %s%s", source, line, path, path[0] ? ": " : "");
+  if (k >= 0 && (size_t)k < ld->err_len) vsnprintf(ld->err + k, ld->err_len - (size_t)k, fmt, ap);
+  return 1;
+}
+
+/* Report an error at node `at`; returns 1. */
+static int fail(struct ld *ld, const struct ynode *at, const char *path, const char *fmt, ...) {
+  va_list ap;
+  va_start(ap, fmt);
+  vfail(ld, at->source, at->line, path, fmt, ap);
+  va_end(ap);
+  return 1;
+}
+
+/* Report an error at an explicit source and line; returns 1. */
+static int fail_at(struct ld *ld, const char *source, int line, const char *path, const char *fmt,
+                   ...) {
+  va_list ap;
+  va_start(ap, fmt);
+  vfail(ld, source, line, path, fmt, ap);
+  va_end(ap);
+  return 1;
+}
+
+static const char *names_list(const char *const *names, char *buf) {
+  buf[0] = '\0';
+  for (int i = 0; names[i]; i++) {
+    size_t k = strlen(buf);
+    snprintf(buf + k, LIST_LEN - k, "%s%s", i ? ", " : "", names[i]);
+  }
+  return buf;
+}
+
+/* How a node looks in a message: 'text', the string "text", a list of n items, a mapping. */
+static const char *shown(const struct ynode *v, char *buf, size_t len) {
+  if (v->kind == YNODE_MAPPING) return "a mapping";
+  if (v->kind == YNODE_SEQUENCE)
+    snprintf(buf, len, "a list of %d item%s", v->n, v->n == 1 ? "" : "s");
+  else
+    snprintf(buf, len, v->plain ? "'%.60s'" : "the string \"%.60s\"", v->text);
+  return buf;
+}
+
+static int fail_got(struct ld *ld, const struct ynode *v, const char *path, const char *expected) {
+  char buf[96];
+  return fail(ld, v, path, "got %s, expected %s", shown(v, buf, sizeof buf), expected);
+}
+
+static const char *fmt_vec(char *buf, size_t len, const double *v, int n) {
+  int k = snprintf(buf, len, "[");
+  for (int i = 0; i < n && k > 0 && (size_t)k < len; i++)
+    k += snprintf(buf + k, len - (size_t)k, "%s%g", i ? ", " : "", v[i]);
+  if (k > 0 && (size_t)k < len) snprintf(buf + k, len - (size_t)k, "]");
+  return buf;
+}
+
+/* ---- paths and lookups ---- */
+
+static void join(char *out, const char *parent, const char *key) {
+  if (snprintf(out, PATH_LEN, "%s%s%s", parent, parent[0] ? "." : "", key) >= PATH_LEN)
+    out[PATH_LEN - 1] = '\0';
+}
+
+static void join_index(char *out, const char *parent, int i) {
+  char index[16];
+  snprintf(index, sizeof index, "%d", i);
+  join(out, parent, index);
+}
+
+/* The value of key in m (NULL if absent); its path goes to path. */
+static const struct ynode *get(const struct map *m, const char *key, char *path) {
+  join(path, m->path, key);
+  return ytree_get(m->node, key);
+}
+
+static int missing(const struct map *m, const char *path, const char *expected) {
+  return fail(m->ld, m->at, path, "missing required key, expected %s", expected);
+}
+
+static int check_keys(const struct map *m, const char *const *allowed) {
+  for (int i = 0; i < m->node->n; i++) {
+    const struct yentry *e = &m->node->entries[i];
+    int known = 0;
+    for (int k = 0; allowed[k]; k++) known |= strcmp(e->key, allowed[k]) == 0;
+    if (known) continue;
+    char path[PATH_LEN], names[LIST_LEN];
+    join(path, m->path, e->key);
+    return fail_at(m->ld, e->value->source, e->key_line, path, "unknown key, allowed keys: %s",
+                   names_list(allowed, names));
+  }
+  return 0;
+}
+
+/* Start reading mapping v (may be NULL) at path, with the given allowed keys. */
+static int open_map(struct ld *ld, const struct ynode *v, const struct ynode *at, const char *path,
+                    const char *const *allowed, struct map *m) {
+  m->ld = ld;
+  m->node = v;
+  m->at = v ? v : at;
+  snprintf(m->path, sizeof m->path, "%s", path);
+  if (!v) return 0;
+  if (v->kind != YNODE_MAPPING) {
+    char expected[LIST_LEN + 32], names[LIST_LEN];
+    snprintf(expected, sizeof expected, "a mapping with keys: %s", names_list(allowed, names));
+    return fail_got(ld, v, path, expected);
+  }
+  return check_keys(m, allowed);
+}
+
+/* Start reading the mapping under key of parent. */
+static int sub(const struct map *parent, const char *key, const char *const *allowed,
+               struct map *m) {
+  char path[PATH_LEN];
+  const struct ynode *v = get(parent, key, path);
+  return open_map(parent->ld, v, parent->at, path, allowed, m);
+}
+
+/* ---- scalar getters ---- */
+
+static int number_of(struct ld *ld, const struct ynode *v, const char *path, const struct rule *r,
+                     double *out) {
+  char *end = NULL;
+  double x = 0;
+  if (v->kind == YNODE_SCALAR && v->plain && v->text[0]) x = strtod(v->text, &end);
+  int ok = end && *end == '\0' && isfinite(x) && (r->lo_open ? x > r->lo : x >= r->lo) &&
+           x <= r->hi && (!r->integer || x == floor(x));
+  if (!ok) return fail_got(ld, v, path, r->expected);
+  *out = x;
+  return 0;
+}
+
+/* The number under key (def when absent; def REQUIRED makes it required). */
+static int num(const struct map *m, const char *key, const struct rule *r, double def,
+               double *out) {
+  char path[PATH_LEN];
+  const struct ynode *v = get(m, key, path);
+  if (v) return number_of(m->ld, v, path, r, out);
+  if (isnan(def)) return missing(m, path, r->expected);
+  *out = def;
+  return 0;
+}
+
+static int lnum(const struct map *m, const char *key, const struct rule *r, double def,
+                long *out) {
+  double x;
+  if (num(m, key, r, def, &x)) return 1;
+  *out = (long)x;
+  return 0;
+}
+
+/* The index of the value of key in names (def when absent). */
+static int choice(const struct map *m, const char *key, const char *const *names, int def,
+                  int *out) {
+  char path[PATH_LEN], list[LIST_LEN], buf[96];
+  const struct ynode *v = get(m, key, path);
+  *out = def;
+  if (!v) return 0;
+  for (int i = 0; names[i]; i++)
+    if (v->kind == YNODE_SCALAR && strcmp(v->text, names[i]) == 0) {
+      *out = i;
+      return 0;
+    }
+  return fail(m->ld, v, path, "got %s, allowed values: %s", shown(v, buf, sizeof buf),
+              names_list(names, list));
+}
+
+static int text_ok(const char *s, const char *punct, size_t cap) {
+  size_t n = strlen(s);
+  if (n >= cap) return 0;
+  if (!punct) return 1;
+  for (size_t i = 0; i < n; i++)
+    if (!strchr(ALNUM, s[i]) && !strchr(punct, s[i])) return 0;
+  return n > 0 && strspn(s, ".") < n;
+}
+
+/* The string under key, shorter than cap; punct non-NULL: a name of letters, digits and punct.
+ * def NULL makes it required. */
+static int text(const struct map *m, const char *key, const char *punct, const char *def,
+                size_t cap, char *out) {
+  char path[PATH_LEN], expected[128];
+  const struct ynode *v = get(m, key, path);
+  if (punct)
+    snprintf(expected, sizeof expected, "a name of 1 to %zu characters from [A-Za-z0-9%s]%s",
+             cap - 1, punct, strchr(punct, '.') ? ", not only dots" : "");
+  else
+    snprintf(expected, sizeof expected, "a string of at most %zu characters", cap - 1);
+  if (!v && !def) return missing(m, path, expected);
+  if (v && (v->kind != YNODE_SCALAR || !text_ok(v->text, punct, cap)))
+    return fail_got(m->ld, v, path, expected);
+  snprintf(out, cap, "%s", v ? v->text : def);
+  return 0;
+}
+
+/* ---- vectors, lists and shapes ---- */
+
+/* The n numbers of the list v into out[0..n-1]; expected describes such a list. */
+static int vec_of(struct ld *ld, const struct ynode *v, const char *path, int n,
+                  const char *expected, double *out) {
+  char ipath[PATH_LEN];
+  if (v->kind != YNODE_SEQUENCE || v->n != n) return fail_got(ld, v, path, expected);
+  for (int i = 0; i < n; i++) {
+    join_index(ipath, path, i);
+    if (number_of(ld, v->entries[i].value, ipath, &R_ANY, &out[i])) return 1;
+  }
+  return 0;
+}
+
+/* The dimension-long vector under key; left as it is (zero) when absent and not required. */
+static int vec(const struct map *m, const char *key, int required, double *out) {
+  char path[PATH_LEN], expected[64];
+  const struct ynode *v = get(m, key, path);
+  snprintf(expected, sizeof expected, "a list of %d numbers (one per dimension)", m->ld->dim);
+  if (v) return vec_of(m->ld, v, path, m->ld->dim, expected, out);
+  return required ? missing(m, path, expected) : 0;
+}
+
+/* The list under key, of lo..hi items (*seq NULL when absent and lo == 0). */
+static int list(const struct map *m, const char *key, int lo, int hi, const char *what,
+                const struct ynode **seq, char *path) {
+  char expected[128];
+  snprintf(expected, sizeof expected, "a list of %d to %d %s", lo, hi, what);
+  *seq = get(m, key, path);
+  if (!*seq) return lo > 0 ? missing(m, path, expected) : 0;
+  if ((*seq)->kind != YNODE_SEQUENCE || (*seq)->n < lo || (*seq)->n > hi)
+    return fail_got(m->ld, *seq, path, expected);
+  return 0;
+}
+
+/* min and max of a box mapping, max > min in every component. */
+static int corners(const struct map *m, double *lo, double *hi) {
+  if (vec(m, "min", 1, lo) || vec(m, "max", 1, hi)) return 1;
+  for (int d = 0; d < m->ld->dim; d++) {
+    if (hi[d] > lo[d]) continue;
+    char path[PATH_LEN], a[128], b[128];
+    const struct ynode *v = get(m, "max", path);
+    return fail(m->ld, v, path, "got max %s not above min %s, expected max > min in every "
+                "component", fmt_vec(a, sizeof a, hi, m->ld->dim),
+                fmt_vec(b, sizeof b, lo, m->ld->dim));
+  }
+  return 0;
+}
+
+static int polygon(const struct map *m, struct shape *s) {
+  char path[PATH_LEN], ipath[PATH_LEN];
+  const struct ynode *seq;
+  if (m->ld->dim != 2)
+    return fail(m->ld, get(m, "polygon", path), path,
+                "got a polygon in 3D, expected box or circle (polygons are 2D only)");
+  if (list(m, "polygon", 3, CASE_MAX_VERTICES, "[x, y] vertices", &seq, path)) return 1;
+  s->n_vertices = seq->n;
+  for (int i = 0; i < seq->n; i++) {
+    join_index(ipath, path, i);
+    if (vec_of(m->ld, seq->entries[i].value, ipath, 2, "an [x, y] pair", s->vertex[i])) return 1;
+  }
+  return 0;
+}
+
+/* The one shape (box, circle or polygon) of a fluid or wall item. */
+static int shape(const struct map *m, struct shape *s) {
+  char names[LIST_LEN];
+  struct map sm;
+  int count = 0;
+  for (int k = 0; SHAPE_NAMES[k]; k++)
+    if (ytree_get(m->node, SHAPE_NAMES[k])) {
+      s->kind = (enum shape_kind)k;
+      count++;
+    }
+  if (count != 1)
+    return fail(m->ld, m->at, m->path, "got %d shapes, expected exactly one of: %s", count,
+                names_list(SHAPE_NAMES, names));
+  switch (s->kind) {
+  case SHAPE_BOX:
+    return sub(m, "box", BOX_KEYS, &sm) || corners(&sm, s->min, s->max);
+  case SHAPE_CIRCLE:
+    return sub(m, "circle", CIRCLE_KEYS, &sm) || vec(&sm, "centre", 1, s->centre) ||
+           num(&sm, "radius", &R_POSITIVE, REQUIRED, &s->radius);
+  default:
+    return polygon(m, s);
+  }
+}
+
+static void bbox(const struct shape *s, double *lo, double *hi) {
+  for (int d = 0; d < 3; d++) {
+    lo[d] = s->kind == SHAPE_BOX ? s->min[d] : s->centre[d] - s->radius;
+    hi[d] = s->kind == SHAPE_BOX ? s->max[d] : s->centre[d] + s->radius;
+  }
+  if (s->kind != SHAPE_POLYGON) return;
+  for (int d = 0; d < 2; d++) {
+    lo[d] = hi[d] = s->vertex[0][d];
+    for (int i = 1; i < s->n_vertices; i++) {
+      lo[d] = fmin(lo[d], s->vertex[i][d]);
+      hi[d] = fmax(hi[d], s->vertex[i][d]);
+    }
+  }
+}
+
+/* The point (lo == hi) or bounding box lo..hi given under key lies inside the domain. */
+static int inside(const struct map *m, const char *key, const double *lo, const double *hi,
+                  const struct case_def *c) {
+  int dim = m->ld->dim, point = memcmp(lo, hi, (size_t)dim * sizeof *lo) == 0;
+  for (int d = 0; d < dim; d++) {
+    if (lo[d] >= c->domain_min[d] && hi[d] <= c->domain_max[d]) continue;
+    char path[PATH_LEN], a[128], b[128], dmin[128], dmax[128];
+    const struct ynode *v = get(m, key, path);
+    fmt_vec(a, sizeof a, lo, dim);
+    fmt_vec(b, sizeof b, hi, dim);
+    return fail(m->ld, v, path, "got %s%s%s%s outside the domain, expected %s inside the domain "
+                "min %s max %s", point ? "" : "bounding box min ", a, point ? "" : " max ",
+                point ? "" : b, point ? "a point" : "a shape",
+                fmt_vec(dmin, sizeof dmin, c->domain_min, dim),
+                fmt_vec(dmax, sizeof dmax, c->domain_max, dim));
+  }
+  return 0;
+}
+
+/* The name under "name" of item i of an array (first, stride) differs from the earlier ones. */
+static int unique_name(const struct map *m, const char *first, size_t stride, int i) {
+  const char *name = first + (size_t)i * stride;
+  char path[PATH_LEN];
+  for (int j = 0; j < i; j++)
+    if (strcmp(first + (size_t)j * stride, name) == 0)
+      return fail(m->ld, get(m, "name", path), path, "got '%s' a second time, expected unique "
+                  "names", name);
+  return 0;
+}
+
+/* ---- sections ---- */
+
+typedef int (*item_reader)(const struct map *item, struct case_def *c, int i);
+
+/* Read each mapping of the list under key with fn; the count goes to *n. */
+static int read_list(const struct map *root, const char *key, int lo, int hi, const char *what,
+                     const char *const *allowed, item_reader fn, struct case_def *c, int *n) {
+  char path[PATH_LEN], ipath[PATH_LEN];
+  const struct ynode *seq;
+  struct map m;
+  if (list(root, key, lo, hi, what, &seq, path)) return 1;
+  *n = seq ? seq->n : 0;
+  for (int i = 0; i < *n; i++) {
+    join_index(ipath, path, i);
+    if (open_map(root->ld, seq->entries[i].value, NULL, ipath, allowed, &m) || fn(&m, c, i))
+      return 1;
+  }
+  return 0;
+}
+
+static int read_phase(const struct map *m, struct case_def *c, int i) {
+  struct phase *p = &c->phases[i];
+  return text(m, "name", NAME_PUNCT, NULL, sizeof p->name, p->name) ||
+         unique_name(m, c->phases[0].name, sizeof c->phases[0], i) ||
+         num(m, "rho0", &R_POSITIVE, REQUIRED, &p->rho0) ||
+         num(m, "c0", &R_POSITIVE, REQUIRED, &p->c0) ||
+         num(m, "gamma", &R_POSITIVE, 7, &p->gamma) ||
+         num(m, "p_background", &R_ANY, 0, &p->p_background) ||
+         num(m, "viscosity", &R_NONNEGATIVE, 0, &p->viscosity) ||
+         choice(m, "incompressible", BOOL_NAMES, 0, &p->incompressible);
+}
+
+static int phase_index(const struct map *m, const struct case_def *c, int *out) {
+  char name[CASE_MAX_NAME], path[PATH_LEN], known[LIST_LEN] = "";
+  if (text(m, "phase", NULL, NULL, sizeof name, name)) return 1;
+  for (int i = 0; i < c->n_phases; i++) {
+    if (strcmp(c->phases[i].name, name) == 0) {
+      *out = i;
+      return 0;
+    }
+    size_t k = strlen(known);
+    snprintf(known + k, sizeof known - k, "%s%s", i ? ", " : "", c->phases[i].name);
+  }
+  return fail(m->ld, get(m, "phase", path), path, "unknown phase '%s', known phases: %s", name,
+              known);
+}
+
+static int shape_inside(const struct map *m, const struct shape *s, const struct case_def *c) {
+  double lo[3], hi[3];
+  bbox(s, lo, hi);
+  return inside(m, SHAPE_NAMES[s->kind], lo, hi, c);
+}
+
+static int read_fluid(const struct map *m, struct case_def *c, int i) {
+  struct fluid_region *f = &c->fluids[i];
+  return phase_index(m, c, &f->phase) || shape(m, &f->shape) || shape_inside(m, &f->shape, c) ||
+         vec(m, "velocity", 0, f->velocity);
+}
+
+static int read_wall(const struct map *m, struct case_def *c, int i) {
+  struct wall *w = &c->walls[i];
+  int slip, side;
+  if (shape(m, &w->shape) || choice(m, "slip", SLIP_NAMES, SLIP_FREE, &slip) ||
+      choice(m, "fluid_side", SIDE_NAMES, FLUID_INSIDE, &side))
+    return 1;
+  w->slip = (enum slip_kind)slip;
+  w->fluid_side = (enum fluid_side)side;
+  return 0;
+}
+
+static int read_probe(const struct map *m, struct case_def *c, int i) {
+  struct probe *p = &c->probes[i];
+  int kind;
+  if (text(m, "name", PROBE_PUNCT, NULL, sizeof p->name, p->name) ||
+      unique_name(m, c->probes[0].name, sizeof c->probes[0], i) ||
+      choice(m, "kind", PROBE_KIND_NAMES, PROBE_PRESSURE, &kind) ||
+      vec(m, "position", 1, p->position))
+    return 1;
+  p->kind = (enum probe_kind)kind;
+  return inside(m, "position", p->position, p->position, c);
+}
+
+static int read_top(struct map *m, struct case_def *c) {
+  double dim;
+  int scheme, kernel;
+  if (text(m, "name", NAME_PUNCT, NULL, sizeof c->name, c->name) ||
+      text(m, "description", NULL, "", sizeof c->description, c->description) ||
+      num(m, "dimension", &R_DIMENSION, REQUIRED, &dim) ||
+      choice(m, "scheme", SCHEME_NAMES, SCHEME_DELTA_PLUS, &scheme) ||
+      choice(m, "kernel", KERNEL_NAMES, KERNEL_GAUSSIAN, &kernel))
+    return 1;
+  c->dimension = m->ld->dim = (int)dim;
+  c->scheme = (enum scheme_kind)scheme;
+  c->kernel = (enum kernel_kind)kernel;
+  return vec(m, "gravity", 0, c->gravity);
+}
+
+static int read_run(const struct map *root, struct case_def *c) {
+  struct map r, t, o;
+  double h_default = c->kernel == KERNEL_GAUSSIAN ? 1.33 : 2.0;
+  return sub(root, "resolution", RESOLUTION_KEYS, &r) ||
+         num(&r, "dx", &R_POSITIVE, REQUIRED, &c->dx) ||
+         num(&r, "h_over_dx", &R_POSITIVE, h_default, &c->h_over_dx) ||
+         sub(root, "time", TIME_KEYS, &t) || num(&t, "end", &R_POSITIVE, REQUIRED, &c->t_end) ||
+         num(&t, "cfl", &R_CFL, 1.0, &c->cfl) ||
+         lnum(&t, "max_steps", &R_COUNT, 0, &c->max_steps) ||
+         sub(root, "output", OUTPUT_KEYS, &o) ||
+         num(&o, "interval", &R_NONNEGATIVE, 0, &c->output_interval) ||
+         num(&o, "stats_interval", &R_POSITIVE, c->t_end / 100, &c->stats_interval) ||
+         num(&o, "probes_interval", &R_POSITIVE, c->stats_interval, &c->probes_interval) ||
+         num(&o, "progress_interval", &R_POSITIVE, 10, &c->progress_interval);
+}
+
+static int read_contents(const struct map *root, struct case_def *c) {
+  struct map d;
+  return sub(root, "domain", BOX_KEYS, &d) || corners(&d, c->domain_min, c->domain_max) ||
+         read_list(root, "phases", 1, CASE_MAX_PHASES, "phases", PHASE_KEYS, read_phase, c,
+                   &c->n_phases) ||
+         read_list(root, "fluids", 0, CASE_MAX_REGIONS, "fluid regions", FLUID_KEYS, read_fluid,
+                   c, &c->n_fluids) ||
+         read_list(root, "walls", 0, CASE_MAX_WALLS, "walls", WALL_KEYS, read_wall, c,
+                   &c->n_walls) ||
+         read_list(root, "probes", 0, CASE_MAX_PROBES, "probes", PROBE_KEYS, read_probe, c,
+                   &c->n_probes);
+}
+
+static int read_options(const struct map *root, struct case_def *c) {
+  struct map ph, in, pa;
+  int shifting, pressure;
+  if (sub(root, "physics", PHYSICS_KEYS, &ph) ||
+      num(&ph, "delta", &R_NONNEGATIVE, 0.1, &c->delta) ||
+      num(&ph, "artificial_viscosity", &R_NONNEGATIVE, 0.1, &c->alpha) ||
+      num(&ph, "acoustic_damper", &R_NONNEGATIVE, 0, &c->acoustic_damper) ||
+      choice(&ph, "shifting", SHIFTING_NAMES, SHIFTING_NONE, &shifting) ||
+      num(&ph, "u_max", &R_NONNEGATIVE, 0, &c->u_max) ||
+      sub(root, "initial", INITIAL_KEYS, &in) ||
+      choice(&in, "pressure", PRESSURE_NAMES, INIT_PRESSURE_HYDROSTATIC, &pressure) ||
+      sub(root, "parallel", PARALLEL_KEYS, &pa) ||
+      num(&pa, "repartition_threshold", &R_POSITIVE, 0.1, &c->repartition_threshold) ||
+      lnum(&pa, "repartition_every", &R_COUNT, 0, &c->repartition_every))
+    return 1;
+  c->shifting = (enum shifting_kind)shifting;
+  c->initial_pressure = (enum init_pressure)pressure;
+  return 0;
+}
+
+static int read_case(const struct ynode *root, struct case_def *c, char *err, size_t err_len) {
+  struct ld ld = {err, err_len, 2};
+  struct map m;
+  return open_map(&ld, root, root, "", ROOT_KEYS, &m) || read_top(&m, c) || read_run(&m, c) ||
+         read_contents(&m, c) || read_options(&m, c);
+}
+
+/* Load, override, validate and resolve a case file into c. */
+int case_load(const char *path, int n_sets, char *const *sets, struct case_def *c, char *err,
+              size_t err_len) {
+  memset(c, 0, sizeof *c);
+  if (strlen(path) >= sizeof c->source_file) {
+    if (err_len) snprintf(err, err_len, "%s: path too long, expected at most %zu characters",
+                          path, sizeof c->source_file - 1);
+    return 1;
+  }
+  snprintf(c->source_file, sizeof c->source_file, "%s", path);
+  struct ynode *root = ytree_load(path, err, err_len);
+  int rc = root ? 0 : 1;
+  for (int i = 0; rc == 0 && i < n_sets; i++) rc = ytree_set(root, sets[i], i + 1, err, err_len);
+  if (rc == 0) rc = read_case(root, c, err, err_len);
+  ytree_free(root);
+  return rc;
+}
+
+/* ---- writing ---- */
+
+/* The shortest of %.15g, %.16g, %.17g that reads back as x exactly. */
+static const char *fmt_num(char *buf, size_t len, double x) {
+  for (int digits = 15; digits <= 17; digits++) {
+    snprintf(buf, len, "%.*g", digits, x);
+    if (strtod(buf, NULL) == x) break;
+  }
+  return buf;
+}
+
+static void put_num(FILE *f, const char *indent, const char *key, double x) {
+  char buf[32];
+  fprintf(f, "%s%s: %s\n", indent, key, fmt_num(buf, sizeof buf, x));
+}
+
+static void put_word(FILE *f, const char *indent, const char *key, const char *word) {
+  fprintf(f, "%s%s: %s\n", indent, key, word);
+}
+
+static void put_long(FILE *f, const char *indent, const char *key, long x) {
+  fprintf(f, "%s%s: %ld\n", indent, key, x);
+}
+
+static void put_flow_vec(FILE *f, const double *v, int n) {
+  char buf[32];
+  fputc('[', f);
+  for (int i = 0; i < n; i++) fprintf(f, "%s%s", i ? ", " : "", fmt_num(buf, sizeof buf, v[i]));
+  fputc(']', f);
+}
+
+static void put_vec(FILE *f, const char *indent, const char *key, const double *v, int n) {
+  fprintf(f, "%s%s: ", indent, key);
+  put_flow_vec(f, v, n);
+  fputc('\n', f);
+}
+
+/* A double-quoted YAML string. */
+static void put_str(FILE *f, const char *indent, const char *key, const char *s) {
+  fprintf(f, "%s%s: \"", indent, key);
+  for (; *s; s++) {
+    unsigned char ch = (unsigned char)*s;
+    if (ch == '"' || ch == '\\')
+      fprintf(f, "\\%c", ch);
+    else if (ch < 0x20 || ch == 0x7f)
+      fprintf(f, "\\x%02x", ch);
+    else
+      fputc(ch, f);
+  }
+  fputs("\"\n", f);
+}
+
+/* A shape key at indent, its mapping entries at inner. */
+static void put_shape(FILE *f, const char *indent, const char *inner, const struct shape *s,
+                      int dim) {
+  fprintf(f, "%s%s:", indent, SHAPE_NAMES[s->kind]);
+  if (s->kind == SHAPE_POLYGON) {
+    fputs(" [", f);
+    for (int i = 0; i < s->n_vertices; i++) {
+      fputs(i ? ", " : "", f);
+      put_flow_vec(f, s->vertex[i], 2);
+    }
+    fputs("]\n", f);
+    return;
+  }
+  fputc('\n', f);
+  put_vec(f, inner, s->kind == SHAPE_BOX ? "min" : "centre", s->kind == SHAPE_BOX ? s->min :
+          s->centre, dim);
+  if (s->kind == SHAPE_BOX)
+    put_vec(f, inner, "max", s->max, dim);
+  else
+    put_num(f, inner, "radius", s->radius);
+}
+
+static void put_list_key(FILE *f, const char *key, int n) {
+  fprintf(f, "%s:%s\n", key, n ? "" : " []");
+}
+
+static void put_head(FILE *f, const struct case_def *c) {
+  int dim = c->dimension;
+  put_str(f, "", "name", c->name);
+  put_str(f, "", "description", c->description);
+  put_long(f, "", "dimension", dim);
+  put_word(f, "", "scheme", SCHEME_NAMES[c->scheme]);
+  put_word(f, "", "kernel", KERNEL_NAMES[c->kernel]);
+  fputs("resolution:\n", f);
+  put_num(f, "  ", "dx", c->dx);
+  put_num(f, "  ", "h_over_dx", c->h_over_dx);
+  put_vec(f, "", "gravity", c->gravity, dim);
+  fputs("time:\n", f);
+  put_num(f, "  ", "end", c->t_end);
+  put_num(f, "  ", "cfl", c->cfl);
+  put_long(f, "  ", "max_steps", c->max_steps);
+  fputs("output:\n", f);
+  put_num(f, "  ", "interval", c->output_interval);
+  put_num(f, "  ", "stats_interval", c->stats_interval);
+  put_num(f, "  ", "probes_interval", c->probes_interval);
+  put_num(f, "  ", "progress_interval", c->progress_interval);
+  fputs("domain:\n", f);
+  put_vec(f, "  ", "min", c->domain_min, dim);
+  put_vec(f, "  ", "max", c->domain_max, dim);
+}
+
+static void put_bodies(FILE *f, const struct case_def *c) {
+  put_list_key(f, "phases", c->n_phases);
+  for (int i = 0; i < c->n_phases; i++) {
+    const struct phase *p = &c->phases[i];
+    put_str(f, "  - ", "name", p->name);
+    put_num(f, "    ", "rho0", p->rho0);
+    put_num(f, "    ", "c0", p->c0);
+    put_num(f, "    ", "gamma", p->gamma);
+    put_num(f, "    ", "p_background", p->p_background);
+    put_num(f, "    ", "viscosity", p->viscosity);
+    put_word(f, "    ", "incompressible", BOOL_NAMES[p->incompressible != 0]);
+  }
+  put_list_key(f, "fluids", c->n_fluids);
+  for (int i = 0; i < c->n_fluids; i++) {
+    put_str(f, "  - ", "phase", c->phases[c->fluids[i].phase].name);
+    put_shape(f, "    ", "      ", &c->fluids[i].shape, c->dimension);
+    put_vec(f, "    ", "velocity", c->fluids[i].velocity, c->dimension);
+  }
+  put_list_key(f, "walls", c->n_walls);
+  for (int i = 0; i < c->n_walls; i++) {
+    put_shape(f, "  - ", "      ", &c->walls[i].shape, c->dimension);
+    put_word(f, "    ", "slip", SLIP_NAMES[c->walls[i].slip]);
+    put_word(f, "    ", "fluid_side", SIDE_NAMES[c->walls[i].fluid_side]);
+  }
+}
+
+static void put_tail(FILE *f, const struct case_def *c) {
+  fputs("physics:\n", f);
+  put_num(f, "  ", "delta", c->delta);
+  put_num(f, "  ", "artificial_viscosity", c->alpha);
+  put_num(f, "  ", "acoustic_damper", c->acoustic_damper);
+  put_word(f, "  ", "shifting", SHIFTING_NAMES[c->shifting]);
+  put_num(f, "  ", "u_max", c->u_max);
+  fputs("initial:\n", f);
+  put_word(f, "  ", "pressure", PRESSURE_NAMES[c->initial_pressure]);
+  put_list_key(f, "probes", c->n_probes);
+  for (int i = 0; i < c->n_probes; i++) {
+    put_str(f, "  - ", "name", c->probes[i].name);
+    put_word(f, "    ", "kind", PROBE_KIND_NAMES[c->probes[i].kind]);
+    put_vec(f, "    ", "position", c->probes[i].position, c->dimension);
+  }
+  fputs("parallel:\n", f);
+  put_num(f, "  ", "repartition_threshold", c->repartition_threshold);
+  put_long(f, "  ", "repartition_every", c->repartition_every);
+}
+
+/* The resolved case as YAML text, every key written; NULL if out of memory. Caller frees. */
+char *case_to_yaml(const struct case_def *c) {
+  char *buf = NULL;
+  size_t size = 0;
+  FILE *f = open_memstream(&buf, &size);
+  if (!f) return NULL;
+  put_head(f, c);
+  put_bodies(f, c);
+  put_tail(f, c);
+  fclose(f);
+  return buf;
+}

@@ -1,0 +1,220 @@
+/* engine.c — set-up of a rank's solver state, the rebuild after each step, load balance and the
+ * time loop. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include "engine.h"
+#include "init.h"
+#include "partition.h"
+#include "redistribute.h"
+
+#define CELL_SKIN 1.05          /* cell edge / kernel support: room for motion within a step */
+#define BALANCE_CHECK_EVERY 20  /* steps between load-balance checks */
+#define REPARTITION_MIN_GAP 100 /* steps between imbalance-triggered re-partitions */
+
+static void report(const struct engine *e, const char *msg) {
+  if (e->rank == 0) fprintf(stderr, "mpsph: %s\n", msg);
+}
+
+/* Vertex weight of each cell from this rank's owned particles, summed onto rank 0. */
+static int64_t *cell_weights(const struct engine *e) {
+  long n = e->space.grid.n_cells;
+  int64_t *w = calloc(n, sizeof(int64_t));
+  for (long i = 0; i < e->p.n_owned; i++) w[e->p.cell[i]] += e->p.phase[i] == PHASE_WALL ? 2 : 8;
+  if (e->rank == 0) {
+    MPI_Reduce(MPI_IN_PLACE, w, (int)n, MPI_INT64_T, MPI_SUM, 0, e->comm);
+    for (long c = 0; c < n; c++) w[c] += 1;
+  } else {
+    MPI_Reduce(w, NULL, (int)n, MPI_INT64_T, MPI_SUM, 0, e->comm);
+  }
+  return w;
+}
+
+/* Sort owned particles, rebuild the halo and the cell index. */
+static void resort(struct engine *e) {
+  space_sort(&e->space, &e->p, 0, e->p.n_owned);
+  e->p.n_halo = 0;
+  space_index(&e->space, &e->p);   /* the send lists of the halo are read from the owned cells */
+  halo_rebuild(&e->halo, &e->space, &e->p);
+  space_index(&e->space, &e->p);
+  engine_work_reserve(e);
+}
+
+int engine_repartition(struct engine *e) {
+  char err[512];
+  int64_t *w = cell_weights(e);
+  int *owner = malloc(e->space.grid.n_cells * sizeof(int));
+  int status = partition_cells(&e->space.grid, w, e->n_ranks, e->comm, owner, err, sizeof(err));
+  free(w);
+  if (status) {
+    report(e, err);
+    free(owner);
+    return 1;
+  }
+  space_set_owner(&e->space, owner);
+  free(owner);
+  redistribute_parts(&e->space, &e->p, e->comm);
+  halo_build(&e->halo, &e->space, e->comm);
+  resort(e);
+  e->n_repartitions++;
+  e->last_repartition_step = e->step;
+  return 0;
+}
+
+/* Print the particle that triggered a stop, on the rank that owns it. */
+static void report_particle(const struct engine *e, long i, const char *what) {
+  const struct parts *p = &e->p;
+  fprintf(stderr, "mpsph: unstable at step %ld, t = %.9g s: particle %lld (phase %d) at (%g, %g%s%g) %s\n",
+          e->step, e->time, (long long)p->id[i], p->phase[i], p->x[0][i], p->x[1][i],
+          p->dim == 3 ? ", " : "", p->dim == 3 ? p->x[2][i] : 0.0, what);
+}
+
+int engine_rebuild(struct engine *e) {
+  double t0 = MPI_Wtime();
+  long bad = space_assign_cells(&e->space, &e->p, 0, e->p.n_owned);
+  int any = bad >= 0, any_all;
+  MPI_Allreduce(&any, &any_all, 1, MPI_INT, MPI_MAX, e->comm);
+  if (bad >= 0) report_particle(e, bad, "left the domain");
+  if (any_all) return 2;
+  int64_t lost = halo_migrate(&e->halo, &e->space, &e->p);
+  if (lost >= 0) {
+    if (e->rank == 0)
+      fprintf(stderr, "mpsph: unstable at step %ld: particle %lld moved more than a cell in one step\n",
+              e->step, (long long)lost);
+    return 2;
+  }
+  resort(e);
+  e->t_migrate += MPI_Wtime() - t0;
+  return 0;
+}
+
+/* Imbalance (max/mean - 1) of a per-rank quantity. */
+static double rank_imbalance(const struct engine *e, double local) {
+  double max, sum;
+  MPI_Allreduce(&local, &max, 1, MPI_DOUBLE, MPI_MAX, e->comm);
+  MPI_Allreduce(&local, &sum, 1, MPI_DOUBLE, MPI_SUM, e->comm);
+  return sum > 0 ? max / (sum / e->n_ranks) - 1.0 : 0.0;
+}
+
+/* Re-partition when forced by repartition_every or when particles or compute time are imbalanced. */
+static int balance(struct engine *e) {
+  const struct case_def *c = e->c;
+  if (e->n_ranks == 1) return 0;
+  if (c->repartition_every > 0 && e->step % c->repartition_every == 0) return engine_repartition(e);
+  if (e->step % BALANCE_CHECK_EVERY) return 0;
+  double work = 0;
+  for (long i = 0; i < e->p.n_owned; i++) work += e->p.phase[i] == PHASE_WALL ? 2 : 8;
+  double parts_imb = rank_imbalance(e, work), time_imb = rank_imbalance(e, e->t_compute);
+  e->t_compute = 0;
+  if (e->step - e->last_repartition_step < REPARTITION_MIN_GAP) return 0;
+  if (parts_imb > c->repartition_threshold || time_imb > c->repartition_threshold) {
+    if (e->rank == 0)
+      printf("re-partition at step %ld: particle imbalance %.1f %%, time imbalance %.1f %%\n",
+             e->step, 100 * parts_imb, 100 * time_imb);
+    return engine_repartition(e);
+  }
+  return 0;
+}
+
+/* Kernel, grid, halo depth. Returns 0 or 1. */
+static int setup_space(struct engine *e) {
+  const struct case_def *c = e->c;
+  e->h = c->h_over_dx * c->dx;
+  e->vol0 = c->dimension == 2 ? c->dx * c->dx : c->dx * c->dx * c->dx;
+  kernel_init(&e->kern, c->kernel, c->dimension, e->h);
+  struct grid g;
+  if (grid_init(&g, c->dimension, c->domain_min, c->domain_max, e->kern.support * CELL_SKIN)) {
+    report(e, "the domain has too many cells for this resolution (more than 2^31)");
+    return 1;
+  }
+  double edge = g.edge[0];
+  for (int d = 1; d < c->dimension; d++) edge = fmin(edge, g.edge[d]);
+  double thickness = init_wall_layers(c, e->kern.support) * c->dx;
+  int layers = c->n_walls ? 1 + (int)ceil(2 * thickness / edge) : 1;
+  space_init(&e->space, &g, e->rank, e->n_ranks, layers);
+  e->c_max = 0;
+  for (int ph = 0; ph < c->n_phases; ph++) e->c_max = fmax(e->c_max, c->phases[ph].c0);
+  return 0;
+}
+
+/* Generate, locate and distribute the initial particles. Returns 0 or 1. */
+static int setup_particles(struct engine *e) {
+  char err[1024];
+  struct init_counts counts;
+  parts_init(&e->p, e->c->dimension, 1024, e->c->n_walls > 0);
+  if (init_particles(e->c, e->kern.support, e->rank, e->n_ranks, &e->p, &counts, err, sizeof(err))) {
+    report(e, err);
+    return 1;
+  }
+  if (space_assign_cells(&e->space, &e->p, 0, e->p.n_owned) >= 0) {
+    report(e, "a particle lies outside the domain at start-up");
+    return 1;
+  }
+  if (e->rank == 0)
+    printf("particles: %ld fluid, %ld wall; grid %ld x %ld x %ld cells, halo %d layers, %d ranks\n",
+           counts.n_fluid, counts.n_wall, e->space.grid.n[0], e->space.grid.n[1], e->space.grid.n[2],
+           e->space.halo_layers, e->n_ranks);
+  return engine_repartition(e);
+}
+
+int engine_init(struct engine *e, const struct case_def *c, const char *outdir, MPI_Comm comm) {
+  memset(e, 0, sizeof(*e));
+  e->c = c;
+  e->comm = comm;
+  e->outdir = outdir;
+  MPI_Comm_rank(comm, &e->rank);
+  MPI_Comm_size(comm, &e->n_ranks);
+  e->wall_start = MPI_Wtime();
+  e->last_snapshot_step = e->last_stats_step = e->last_probes_step = -1;
+  if (setup_space(e) || setup_particles(e)) return 1;
+  e->n_repartitions = 0;
+  engine_assemble(e);
+  return engine_open_output(e);
+}
+
+static void progress(struct engine *e) {
+  double now = MPI_Wtime();
+  if (e->rank || now < e->next_progress) return;
+  double elapsed = now - e->wall_start, frac = e->time / e->c->t_end;
+  long n = e->p.n_owned;
+  printf("step %ld  t = %.6g s  dt = %.3g s  %.3g particle-steps/s/rank  ETA %.0f s\n", e->step,
+         e->time, e->dt, n * (double)e->step / elapsed, frac > 0 ? elapsed * (1 - frac) / frac : 0.0);
+  fflush(stdout);
+  e->next_progress = now + e->c->progress_interval;
+}
+
+int engine_run(struct engine *e) {
+  int status = engine_output(e, 1);
+  e->next_progress = MPI_Wtime() + e->c->progress_interval;
+  while (!status && e->time < e->c->t_end && (!e->c->max_steps || e->step < e->c->max_steps)) {
+    status = engine_step(e);
+    if (!status) status = engine_rebuild(e);
+    if (!status) status = balance(e);
+    if (!status) status = engine_output(e, 0);
+    progress(e);
+  }
+  if (status == 2) report(e, "run stopped: the state became unstable");
+  if (status != 2 && status != 3) status = engine_output(e, 1);
+  engine_close_output(e);
+  return status;
+}
+
+void engine_free(struct engine *e) {
+  for (int d = 0; d < 3; d++) {
+    free(e->w.grad_rho[d]);
+    free(e->w.dv[d]);
+    free(e->w.x0[d]);
+    free(e->w.v0[d]);
+    free(e->w.sum_x[d]);
+    free(e->w.sum_v[d]);
+  }
+  free(e->w.drho);
+  free(e->w.rho0);
+  free(e->w.sum_rho);
+  halo_free(&e->halo);
+  space_free(&e->space);
+  parts_free(&e->p);
+  free(e->case_yaml);
+  free(e->snap_times);
+  free(e->snap_counts);
+}

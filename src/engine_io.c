@@ -1,0 +1,198 @@
+/* engine_io.c — output folder: config.yaml, snapshots + XDMF, stats.csv, probes.csv. */
+#include <errno.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include "case_load.h"
+#include "engine.h"
+#include "io_hdf5.h"
+#include "passes.h"
+
+/* mkdir -p. Returns 0 or -1. */
+static int make_dirs(const char *path) {
+  char buf[1024];
+  snprintf(buf, sizeof(buf), "%s", path);
+  for (char *q = buf + 1; *q; q++) {
+    if (*q != '/') continue;
+    *q = 0;
+    if (mkdir(buf, 0777) && errno != EEXIST) return -1;
+    *q = '/';
+  }
+  return mkdir(buf, 0777) && errno != EEXIST ? -1 : 0;
+}
+
+/* Write text to dir/name through a temporary file. Returns 0 or -1. */
+static int write_text_file(const char *dir, const char *name, const char *text) {
+  char path[1200], tmp[1300];
+  snprintf(path, sizeof(path), "%s/%s", dir, name);
+  snprintf(tmp, sizeof(tmp), "%s.tmp", path);
+  FILE *f = fopen(tmp, "w");
+  if (!f) return -1;
+  int ok = fputs(text, f) >= 0;
+  ok &= fclose(f) == 0;
+  return ok ? rename(tmp, path) : -1;
+}
+
+static FILE *open_csv(const char *dir, const char *name) {
+  char path[1200];
+  snprintf(path, sizeof(path), "%s/%s", dir, name);
+  return fopen(path, "w");
+}
+
+static void stats_header(const struct engine *e) {
+  const struct case_def *c = e->c;
+  fprintf(e->stats, "step,time,dt");
+  for (int ph = 0; ph < c->n_phases; ph++)
+    fprintf(e->stats, ",kinetic_energy_%s,mass_%s,max_density_deviation_%s", c->phases[ph].name,
+            c->phases[ph].name, c->phases[ph].name);
+  const char *axis = "xyz";
+  for (int d = 0; d < c->dimension; d++) fprintf(e->stats, ",momentum_%c", axis[d]);
+  fprintf(e->stats, ",wall_seconds\n");
+  fflush(e->stats);
+}
+
+static void probes_header(const struct engine *e) {
+  fprintf(e->probes, "step,time");
+  for (int k = 0; k < e->c->n_probes; k++) fprintf(e->probes, ",%s", e->c->probes[k].name);
+  fprintf(e->probes, "\n");
+  fflush(e->probes);
+}
+
+int engine_open_output(struct engine *e) {
+  e->case_yaml = case_to_yaml(e->c);
+  int status = 0;
+  if (e->rank == 0) {
+    if (make_dirs(e->outdir) || write_text_file(e->outdir, "config.yaml", e->case_yaml)) {
+      fprintf(stderr, "mpsph: cannot write to the output folder '%s': %s\n", e->outdir, strerror(errno));
+      status = 1;
+    } else {
+      e->stats = open_csv(e->outdir, "stats.csv");
+      if (e->c->n_probes) e->probes = open_csv(e->outdir, "probes.csv");
+      status = !e->stats || (e->c->n_probes && !e->probes) ? 1 : 0;
+      if (!status) stats_header(e);
+      if (!status && e->probes) probes_header(e);
+    }
+  }
+  MPI_Bcast(&status, 1, MPI_INT, 0, e->comm);
+  return status;
+}
+
+void engine_close_output(struct engine *e) {
+  if (e->stats) fclose(e->stats);
+  if (e->probes) fclose(e->probes);
+  e->stats = e->probes = NULL;
+}
+
+static int write_snapshot(struct engine *e) {
+  char path[1200], err[512];
+  snprintf(path, sizeof(path), "%s/snap_%05d.h5", e->outdir, e->n_snapshots);
+  struct snapshot_info info = {e->time, e->step, e->c->dimension, e->case_yaml, MPSPH_VERSION};
+  double t0 = MPI_Wtime();
+  int status = hdf5_write_snapshot(path, &info, &e->p, e->comm, err, sizeof(err));
+  long n_total, n = e->p.n_owned;
+  MPI_Allreduce(&n, &n_total, 1, MPI_LONG, MPI_SUM, e->comm);
+  if (status) {
+    if (e->rank == 0) fprintf(stderr, "mpsph: %s\n", err);
+    return 3;
+  }
+  e->snap_times = realloc(e->snap_times, (e->n_snapshots + 1) * sizeof(double));
+  e->snap_counts = realloc(e->snap_counts, (e->n_snapshots + 1) * sizeof(long));
+  e->snap_times[e->n_snapshots] = e->time;
+  e->snap_counts[e->n_snapshots++] = n_total;
+  if (e->rank == 0 && xdmf_write_series(e->outdir, e->n_snapshots, e->snap_times, e->snap_counts,
+                                        e->c->dimension, err, sizeof(err))) {
+    fprintf(stderr, "mpsph: %s\n", err);
+    status = 3;
+  }
+  MPI_Bcast(&status, 1, MPI_INT, 0, e->comm);
+  e->t_output += MPI_Wtime() - t0;
+  return status;
+}
+
+/* One stats.csv row: per-phase kinetic energy, mass and max |rho/rho0 - 1|, momentum. */
+static void write_stats(struct engine *e) {
+  const struct case_def *c = e->c;
+  const struct parts *p = &e->p;
+  int np = c->n_phases, dim = p->dim;
+  double sum[2 * CASE_MAX_PHASES + 3] = {0}, dev[CASE_MAX_PHASES] = {0};
+  for (long i = 0; i < p->n_owned; i++) {
+    int ph = p->phase[i];
+    if (ph == PHASE_WALL) continue;
+    double v2 = 0;
+    for (int d = 0; d < dim; d++) {
+      v2 += p->v[d][i] * p->v[d][i];
+      sum[2 * np + d] += p->m[i] * p->v[d][i];
+    }
+    sum[2 * ph] += 0.5 * p->m[i] * v2;
+    sum[2 * ph + 1] += p->m[i];
+    dev[ph] = fmax(dev[ph], fabs(p->rho[i] / c->phases[ph].rho0 - 1.0));
+  }
+  MPI_Reduce(e->rank ? sum : MPI_IN_PLACE, sum, 2 * np + dim, MPI_DOUBLE, MPI_SUM, 0, e->comm);
+  MPI_Reduce(e->rank ? dev : MPI_IN_PLACE, dev, np, MPI_DOUBLE, MPI_MAX, 0, e->comm);
+  if (e->rank) return;
+  fprintf(e->stats, "%ld,%.10g,%.6g", e->step, e->time, e->dt);
+  for (int ph = 0; ph < np; ph++) fprintf(e->stats, ",%.10g,%.15g,%.6g", sum[2 * ph], sum[2 * ph + 1], dev[ph]);
+  for (int d = 0; d < dim; d++) fprintf(e->stats, ",%.10g", sum[2 * np + d]);
+  fprintf(e->stats, ",%.3f\n", MPI_Wtime() - e->wall_start);
+  fflush(e->stats);
+}
+
+/* Shepard pressure of fluid particles around x; contributes only on the rank owning x's cell. */
+static void probe_pressure(const struct engine *e, const double *x, double *num, double *den) {
+  const struct parts *p = &e->p;
+  long c = grid_cell_clamped(&e->space.grid, x);
+  *num = *den = 0;
+  if (e->space.owner[c] != e->rank) return;
+  struct neighbour_ranges r;
+  neighbour_ranges(&e->space, c, &r);
+  for (int k = 0; k < r.n; k++)
+    for (long j = r.start[k]; j < r.start[k] + r.count[k]; j++) {
+      if (p->phase[j] == PHASE_WALL) continue;
+      double r2 = 0;
+      for (int d = 0; d < p->dim; d++) r2 += (x[d] - p->x[d][j]) * (x[d] - p->x[d][j]);
+      if (r2 >= e->kern.support2) continue;
+      double wv = kernel_w(&e->kern, r2) * p->m[j] / p->rho[j];
+      *num += wv * p->p[j];
+      *den += wv;
+    }
+}
+
+static void write_probes(struct engine *e) {
+  int n = e->c->n_probes;
+  double buf[2 * CASE_MAX_PROBES];
+  for (int k = 0; k < n; k++) probe_pressure(e, e->c->probes[k].position, &buf[2 * k], &buf[2 * k + 1]);
+  MPI_Reduce(e->rank ? buf : MPI_IN_PLACE, buf, 2 * n, MPI_DOUBLE, MPI_SUM, 0, e->comm);
+  if (e->rank) return;
+  fprintf(e->probes, "%ld,%.10g", e->step, e->time);
+  for (int k = 0; k < n; k++) fprintf(e->probes, ",%.8g", buf[2 * k + 1] > 0 ? buf[2 * k] / buf[2 * k + 1] : 0.0);
+  fprintf(e->probes, "\n");
+  fflush(e->probes);
+}
+
+/* 1 if an output of period `interval` is due at the current time (advances *next). */
+static int due(double time, double interval, double *next, int force) {
+  if (!force && time < *next * (1 - 1e-12)) return 0;
+  if (interval > 0)
+    while (*next <= time * (1 + 1e-12)) *next += interval;
+  return 1;
+}
+
+int engine_output(struct engine *e, int force) {
+  const struct case_def *c = e->c;
+  double snap_interval = c->output_interval > 0 ? c->output_interval : INFINITY;
+  if (due(e->time, snap_interval, &e->next_output, force) && e->last_snapshot_step != e->step) {
+    e->last_snapshot_step = e->step;
+    if (write_snapshot(e)) return 3;
+  }
+  if (due(e->time, c->stats_interval, &e->next_stats, force) && e->last_stats_step != e->step) {
+    e->last_stats_step = e->step;
+    write_stats(e);
+  }
+  if (c->n_probes && due(e->time, c->probes_interval, &e->next_probes, force) &&
+      e->last_probes_step != e->step) {
+    e->last_probes_step = e->step;
+    write_probes(e);
+  }
+  return 0;
+}

@@ -1,0 +1,198 @@
+/* init.c — initial particle generation. */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+#include "eos.h"
+#include "geometry.h"
+#include "init.h"
+
+#define BOUNDARY_TOL 1e-9   /* relative tolerance on distances to wall boundaries */
+
+/* 1 if x lies where fluid may be: inside some tank (if any) and outside every obstacle. */
+static int fluid_accessible(const struct case_def *c, const double *x) {
+  int has_tank = 0, in_tank = 0;
+  for (int w = 0; w < c->n_walls; w++) {
+    int inside = shape_contains(&c->walls[w].shape, c->dimension, x);
+    if (c->walls[w].fluid_side == FLUID_INSIDE) {
+      has_tank = 1;
+      in_tank |= inside;
+    } else if (inside) {
+      return 0;
+    }
+  }
+  return !has_tank || in_tank;
+}
+
+/* Distance from x to the nearest wall boundary (infinity without walls). */
+static double wall_distance(const struct case_def *c, const double *x) {
+  double best = INFINITY, q[3];
+  for (int w = 0; w < c->n_walls; w++)
+    best = fmin(best, shape_nearest_boundary(&c->walls[w].shape, c->dimension, x, q));
+  return best;
+}
+
+/* 1 if x is a ghost node of wall w: on its solid side, within the wall thickness. */
+static int ghost_of(const struct case_def *c, int w, double thickness, const double *x) {
+  const struct wall *wl = &c->walls[w];
+  int inside = shape_contains(&wl->shape, c->dimension, x);
+  if (inside == (wl->fluid_side == FLUID_INSIDE)) return 0;
+  double q[3], d = shape_nearest_boundary(&wl->shape, c->dimension, x, q);
+  return d <= thickness * (1 + BOUNDARY_TOL) && d >= 0.5 * c->dx * (1 - BOUNDARY_TOL);
+}
+
+double init_hydrostatic_pressure(const struct case_def *c, const double *x) {
+  double g = 0, up[3] = {0, 0, 0};
+  for (int d = 0; d < c->dimension; d++) g += c->gravity[d] * c->gravity[d];
+  g = sqrt(g);
+  if (g == 0) return 0;
+  for (int d = 0; d < c->dimension; d++) up[d] = -c->gravity[d] / g;
+  double p = 0;
+  for (int k = 0; k < c->n_fluids; k++)
+    p += c->phases[c->fluids[k].phase].rho0 * g *
+         shape_ray_length(&c->fluids[k].shape, c->dimension, x, up);
+  return p;
+}
+
+int init_wall_layers(const struct case_def *c, double support) {
+  return (int)ceil(support / c->dx - BOUNDARY_TOL);
+}
+
+static double cell_volume(const struct case_def *c) {
+  return c->dimension == 2 ? c->dx * c->dx : c->dx * c->dx * c->dx;
+}
+
+/* Store a fluid particle of region k at x in the next slot of p. */
+static void add_fluid(const struct case_def *c, int k, const double *x, int64_t id, struct parts *p) {
+  const struct phase *ph = &c->phases[c->fluids[k].phase];
+  long i = p->n_owned++;
+  parts_reserve(p, p->n_owned);
+  double pressure = ph->p_background;
+  if (c->initial_pressure == INIT_PRESSURE_HYDROSTATIC) pressure += init_hydrostatic_pressure(c, x);
+  for (int d = 0; d < c->dimension; d++) {
+    p->x[d][i] = x[d];
+    p->v[d][i] = c->fluids[k].velocity[d];
+  }
+  p->p[i] = pressure;
+  p->rho[i] = eos_density(ph, pressure);
+  p->m[i] = p->rho[i] * cell_volume(c);
+  p->phase[i] = c->fluids[k].phase;
+  p->id[i] = id;
+  p->cell[i] = -1;
+  if (p->wall) {
+    p->wall[i] = -1;
+    for (int d = 0; d < c->dimension; d++) p->mirror[d][i] = x[d];
+  }
+}
+
+/* Store a ghost of wall w at x (mirror point across the wall boundary). */
+static void add_ghost(const struct case_def *c, int w, const double *x, int64_t id, struct parts *p) {
+  long i = p->n_owned++;
+  parts_reserve(p, p->n_owned);
+  double q[3];
+  shape_nearest_boundary(&c->walls[w].shape, c->dimension, x, q);
+  for (int d = 0; d < c->dimension; d++) {
+    p->x[d][i] = x[d];
+    p->v[d][i] = 0;
+    p->mirror[d][i] = 2 * q[d] - x[d];
+  }
+  p->p[i] = 0;
+  p->rho[i] = c->phases[0].rho0;
+  p->m[i] = p->rho[i] * cell_volume(c);
+  p->phase[i] = PHASE_WALL;
+  p->id[i] = id;
+  p->cell[i] = -1;
+  p->wall[i] = w;
+}
+
+/* The first fluid region before k that contains x, or -1. */
+static int earlier_region(const struct case_def *c, int k, const double *x) {
+  for (int j = 0; j < k; j++)
+    if (shape_contains(&c->fluids[j].shape, c->dimension, x)) return j;
+  return -1;
+}
+
+static int fill_fluids(const struct case_def *c, int rank, int n_ranks, struct parts *p,
+                       struct init_counts *n, int64_t *ordinal, char *err, size_t err_len) {
+  for (int k = 0; k < c->n_fluids; k++) {
+    const struct shape *s = &c->fluids[k].shape;
+    double lo[3], hi[3], anchor[3], x[3];
+    struct lattice l;
+    shape_bbox(s, c->dimension, 0, lo, hi);
+    shape_anchor(s, c->dimension, anchor);
+    lattice_cover(&l, c->dimension, c->dx, anchor, lo, hi);
+    for (long node = 0, size = lattice_size(&l); node < size; node++) {
+      lattice_node(&l, node, x);
+      if (!shape_contains(s, c->dimension, x) || !fluid_accessible(c, x)) continue;
+      if (wall_distance(c, x) < 0.5 * c->dx * (1 - BOUNDARY_TOL)) continue;
+      int j = earlier_region(c, k, x);
+      if (j >= 0) {
+        snprintf(err, err_len, "%s: fluids.%d overlaps fluids.%d (both contain the point (%g, %g%s)); "
+                 "fluid regions must not overlap", c->source_file, k, j, x[0], x[1],
+                 c->dimension == 3 ? ", ..." : "");
+        return 1;
+      }
+      if (p && *ordinal % n_ranks == rank) add_fluid(c, k, x, *ordinal, p);
+      (*ordinal)++;
+      n->fluid[c->fluids[k].phase]++;
+      n->n_fluid++;
+    }
+  }
+  return 0;
+}
+
+/* The first wall before w whose ghost layer contains x, or -1. */
+static int earlier_wall(const struct case_def *c, int w, double thickness, const double *x) {
+  for (int j = 0; j < w; j++)
+    if (ghost_of(c, j, thickness, x)) return j;
+  return -1;
+}
+
+static int inside_domain(const struct case_def *c, const double *x) {
+  for (int d = 0; d < c->dimension; d++)
+    if (x[d] < c->domain_min[d] || x[d] > c->domain_max[d]) return 0;
+  return 1;
+}
+
+static int fill_walls(const struct case_def *c, double thickness, int rank, int n_ranks,
+                      struct parts *p, struct init_counts *n, int64_t *ordinal, char *err,
+                      size_t err_len) {
+  for (int w = 0; w < c->n_walls; w++) {
+    const struct shape *s = &c->walls[w].shape;
+    double lo[3], hi[3], anchor[3], x[3];
+    struct lattice l;
+    shape_bbox(s, c->dimension, thickness, lo, hi);
+    shape_anchor(s, c->dimension, anchor);
+    lattice_cover(&l, c->dimension, c->dx, anchor, lo, hi);
+    for (long node = 0, size = lattice_size(&l); node < size; node++) {
+      lattice_node(&l, node, x);
+      if (!ghost_of(c, w, thickness, x) || fluid_accessible(c, x)) continue;
+      if (earlier_wall(c, w, thickness, x) >= 0) continue;
+      if (!inside_domain(c, x)) {
+        snprintf(err, err_len, "%s: walls.%d: its %d ghost layers (%g m) extend outside the domain "
+                 "at (%g, %g): enlarge domain by at least %g m around the wall", c->source_file, w,
+                 (int)lround(thickness / c->dx), thickness, x[0], x[1], thickness);
+        return 1;
+      }
+      if (p && *ordinal % n_ranks == rank) add_ghost(c, w, x, *ordinal, p);
+      (*ordinal)++;
+      n->n_wall++;
+    }
+  }
+  return 0;
+}
+
+int init_particles(const struct case_def *c, double support, int rank, int n_ranks,
+                   struct parts *p, struct init_counts *counts, char *err, size_t err_len) {
+  memset(counts, 0, sizeof(*counts));
+  int64_t ordinal = 0;
+  double thickness = init_wall_layers(c, support) * c->dx;
+  if (p) p->n_owned = p->n_halo = 0;
+  if (fill_fluids(c, rank, n_ranks, p, counts, &ordinal, err, err_len)) return 1;
+  if (fill_walls(c, thickness, rank, n_ranks, p, counts, &ordinal, err, err_len)) return 1;
+  if (counts->n_fluid == 0) {
+    snprintf(err, err_len, "%s: fluids: no fluid particle was generated (regions empty, or all "
+             "outside the walls)", c->source_file);
+    return 1;
+  }
+  return 0;
+}

@@ -1,0 +1,79 @@
+/* pass_wall_ghosts.c — values of the fixed ghost particles (Marrone et al. 2011, CMAME 200):
+ * Shepard interpolation of pressure and velocity at the ghost's mirror point r*,
+ * p_k = p* + rho* g.(r_k - r*), u_k = mirrored velocity (free slip) or -u* (no slip). */
+#include <string.h>
+#include "passes.h"
+
+/* Shepard sums at one point: sum W V, sum W V p, sum W V rho, sum W V u, per-phase weights. */
+struct shepard {
+  double w, wp, wrho, wu[3];
+  double w_phase[CASE_MAX_PHASES];
+};
+
+static void shepard_at(const struct engine *e, const double *xs, struct shepard *s, long *pairs) {
+  const struct parts *p = &e->p;
+  struct neighbour_ranges r;
+  int dim = p->dim;
+  memset(s, 0, sizeof(*s));
+  neighbour_ranges(&e->space, grid_cell_clamped(&e->space.grid, xs), &r);
+  for (int k = 0; k < r.n; k++)
+    for (long j = r.start[k]; j < r.start[k] + r.count[k]; j++) {
+      if (p->phase[j] == PHASE_WALL) continue;
+      double r2 = 0;
+      for (int d = 0; d < dim; d++) r2 += (xs[d] - p->x[d][j]) * (xs[d] - p->x[d][j]);
+      if (r2 >= e->kern.support2) continue;
+      double wv = kernel_w(&e->kern, r2) * p->m[j] / p->rho[j];
+      s->w += wv;
+      s->wp += wv * p->p[j];
+      s->wrho += wv * p->rho[j];
+      for (int d = 0; d < dim; d++) s->wu[d] += wv * p->v[d][j];
+      s->w_phase[p->phase[j]] += wv;
+      (*pairs)++;
+    }
+}
+
+static int majority_phase(const struct engine *e, const struct shepard *s) {
+  int best = 0;
+  for (int ph = 1; ph < e->c->n_phases; ph++)
+    if (s->w_phase[ph] > s->w_phase[best]) best = ph;
+  return best;
+}
+
+/* Set ghost k from the Shepard sums at its mirror point. */
+static void ghost_from_shepard(struct engine *e, long k, const double *xs, const struct shepard *s) {
+  struct parts *p = &e->p;
+  int dim = p->dim;
+  double u[3] = {0, 0, 0}, n[3], nn = 0, un = 0, pressure = 0;
+  if (s->w > 0) {
+    double rho_star = s->wrho / s->w;
+    pressure = s->wp / s->w;
+    for (int d = 0; d < dim; d++) {
+      u[d] = s->wu[d] / s->w;
+      pressure += rho_star * e->c->gravity[d] * (p->x[d][k] - xs[d]);
+    }
+  }
+  for (int d = 0; d < dim; d++) {
+    n[d] = xs[d] - p->x[d][k];
+    nn += n[d] * n[d];
+  }
+  for (int d = 0; d < dim; d++) un += u[d] * n[d] / nn;
+  int no_slip = e->c->walls[p->wall[k]].slip == SLIP_NO;
+  for (int d = 0; d < dim; d++) p->v[d][k] = no_slip ? -u[d] : u[d] - 2.0 * un * n[d];
+  p->p[k] = pressure;
+  p->rho[k] = e->c->phases[majority_phase(e, s)].rho0;
+  p->m[k] = p->rho[k] * e->vol0;
+}
+
+void pass_wall_ghosts(struct engine *e) {
+  struct parts *p = &e->p;
+  long pairs = 0;
+  for (long k = 0; k < p->n_owned; k++) {
+    if (p->phase[k] != PHASE_WALL) continue;
+    double xs[3] = {0, 0, 0};
+    for (int d = 0; d < p->dim; d++) xs[d] = p->mirror[d][k];
+    struct shepard s;
+    shepard_at(e, xs, &s, &pairs);
+    ghost_from_shepard(e, k, xs, &s);
+  }
+  e->pass_pairs += pairs;
+}
