@@ -28,6 +28,7 @@ enum { HALO_STATE = 1, HALO_WALLS_AND_GRADIENT = 2 };
 /** Work arrays of the scheme, sized to the particle capacity. */
 struct work {
   long capacity;
+  double *vol;                     /* particle volume m/rho of every slot, this stage [m^dim] */
   double *grad_rho[3];             /* renormalised density gradient [kg/m^4] */
   double *drho, *dv[3];            /* right-hand sides of the current stage */
   double *x0[3], *v0[3], *rho0;    /* state at the start of the step */

@@ -11,16 +11,34 @@
 #define CELL_SKIN 1.05          /* cell edge / kernel support: room for motion within a step */
 #define BALANCE_CHECK_EVERY 20  /* steps between load-balance checks */
 #define REPARTITION_MIN_GAP 100 /* steps between imbalance-triggered re-partitions */
+#define MIN_MEASURED_SECONDS 0.05  /* compute time below which timings are too noisy to use */
 
 static void report(const struct engine *e, const char *msg) {
   if (e->rank == 0) fprintf(stderr, "mpsph: %s\n", msg);
 }
 
-/* Vertex weight of each cell from this rank's owned particles, summed onto rank 0. */
+/* Work units of a particle: a fluid particle's pair passes cost about four times a ghost's
+ * interpolation. */
+static int particle_work(int phase) { return phase == PHASE_WALL ? 2 : 8; }
+
+/* This rank's measured seconds per work unit relative to the mean over ranks (1 when no time has
+ * been measured yet), so that cell weights follow the measured compute time. */
+static double cost_factor(const struct engine *e) {
+  double work = 0;
+  for (long i = 0; i < e->p.n_owned; i++) work += particle_work(e->p.phase[i]);
+  double rate = work > 0 ? e->t_compute / work : 0, sum;
+  MPI_Allreduce(&rate, &sum, 1, MPI_DOUBLE, MPI_SUM, e->comm);
+  return sum > 0 && rate > 0 ? rate / (sum / e->n_ranks) : 1.0;
+}
+
+/* Vertex weight of each cell from this rank's owned particles scaled by the rank's cost factor,
+ * summed onto rank 0 (plus 1 so that empty cells still count). */
 static int64_t *cell_weights(const struct engine *e) {
   long n = e->space.grid.n_cells;
   int64_t *w = calloc(n, sizeof(int64_t));
-  for (long i = 0; i < e->p.n_owned; i++) w[e->p.cell[i]] += e->p.phase[i] == PHASE_WALL ? 2 : 8;
+  double factor = cost_factor(e);
+  for (long i = 0; i < e->p.n_owned; i++) w[e->p.cell[i]] += particle_work(e->p.phase[i]);
+  for (long c = 0; c < n; c++) w[c] = (int64_t)llround((double)w[c] * factor);
   if (e->rank == 0) {
     MPI_Reduce(MPI_IN_PLACE, w, (int)n, MPI_INT64_T, MPI_SUM, 0, e->comm);
     for (long c = 0; c < n; c++) w[c] += 1;
@@ -96,24 +114,28 @@ static double rank_imbalance(const struct engine *e, double local) {
   return sum > 0 ? max / (sum / e->n_ranks) - 1.0 : 0.0;
 }
 
-/* Re-partition when forced by repartition_every or when particles or compute time are imbalanced. */
+/* Re-partition when forced by repartition_every, or when the compute time since the last check
+ * (every BALANCE_CHECK_EVERY steps) is imbalanced beyond the case's threshold; while too little
+ * time has been measured to be meaningful, the particle work is used instead. */
 static int balance(struct engine *e) {
   const struct case_def *c = e->c;
   if (e->n_ranks == 1) return 0;
   if (c->repartition_every > 0 && e->step % c->repartition_every == 0) return engine_repartition(e);
   if (e->step % BALANCE_CHECK_EVERY) return 0;
   double work = 0;
-  for (long i = 0; i < e->p.n_owned; i++) work += e->p.phase[i] == PHASE_WALL ? 2 : 8;
-  double parts_imb = rank_imbalance(e, work), time_imb = rank_imbalance(e, e->t_compute);
-  e->t_compute = 0;
-  if (e->step - e->last_repartition_step < REPARTITION_MIN_GAP) return 0;
-  if (parts_imb > c->repartition_threshold || time_imb > c->repartition_threshold) {
+  for (long i = 0; i < e->p.n_owned; i++) work += particle_work(e->p.phase[i]);
+  double parts_imb = rank_imbalance(e, work), time_imb = rank_imbalance(e, e->t_compute), t_sum;
+  MPI_Allreduce(&e->t_compute, &t_sum, 1, MPI_DOUBLE, MPI_SUM, e->comm);
+  double imb = t_sum > MIN_MEASURED_SECONDS ? time_imb : parts_imb;
+  int status = 0;
+  if (e->step - e->last_repartition_step >= REPARTITION_MIN_GAP && imb > c->repartition_threshold) {
     if (e->rank == 0)
       printf("re-partition at step %ld: particle imbalance %.1f %%, time imbalance %.1f %%\n",
              e->step, 100 * parts_imb, 100 * time_imb);
-    return engine_repartition(e);
+    status = engine_repartition(e);
   }
-  return 0;
+  e->t_compute = 0;
+  return status;
 }
 
 /* Kernel, grid, halo depth. Returns 0 or 1. */
@@ -208,6 +230,7 @@ void engine_free(struct engine *e) {
     free(e->w.sum_x[d]);
     free(e->w.sum_v[d]);
   }
+  free(e->w.vol);
   free(e->w.drho);
   free(e->w.rho0);
   free(e->w.sum_rho);

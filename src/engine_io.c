@@ -138,7 +138,9 @@ static void write_stats(struct engine *e) {
   fflush(e->stats);
 }
 
-/* Shepard pressure of fluid particles around x; contributes only on the rank owning x's cell. */
+/* Shepard pressure around x over fluid and wall ghost particles (the ghosts carry the pressure
+ * extrapolated across the wall, so a probe on a wall reads the wall pressure); contributes only
+ * on the rank owning x's cell. */
 static void probe_pressure(const struct engine *e, const double *x, double *num, double *den) {
   const struct parts *p = &e->p;
   long c = grid_cell_clamped(&e->space.grid, x);
@@ -148,7 +150,6 @@ static void probe_pressure(const struct engine *e, const double *x, double *num,
   neighbour_ranges(&e->space, c, &r);
   for (int k = 0; k < r.n; k++)
     for (long j = r.start[k]; j < r.start[k] + r.count[k]; j++) {
-      if (p->phase[j] == PHASE_WALL) continue;
       double r2 = 0;
       for (int d = 0; d < p->dim; d++) r2 += (x[d] - p->x[d][j]) * (x[d] - p->x[d][j]);
       if (r2 >= e->kern.support2) continue;

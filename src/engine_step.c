@@ -24,6 +24,7 @@ void engine_work_reserve(struct engine *e) {
     w->sum_x[d] = grow(w->sum_x[d], n);
     w->sum_v[d] = grow(w->sum_v[d], n);
   }
+  w->vol = grow(w->vol, n);
   w->drho = grow(w->drho, n);
   w->rho0 = grow(w->rho0, n);
   w->sum_rho = grow(w->sum_rho, n);

@@ -91,7 +91,8 @@ static void make_layout(const struct parts *p, MPI_Comm comm, struct layout *L) 
 static int create_file(const char *path, MPI_Comm comm, hid_t *file, char *err, size_t len) {
   hid_t fapl = H5Pcreate(H5P_FILE_ACCESS);
   *file = H5I_INVALID_HID;
-  if (fapl >= 0 && H5Pset_fapl_mpio(fapl, comm, MPI_INFO_NULL) >= 0)
+  if (fapl >= 0 && H5Pset_fapl_mpio(fapl, comm, MPI_INFO_NULL) >= 0 &&
+      H5Pset_coll_metadata_write(fapl, 1) >= 0) /* metadata too goes out collectively */
     *file = H5Fcreate(path, H5F_ACC_TRUNC, H5P_DEFAULT, fapl);
   int st = *file < 0 ? fail(err, len, "cannot create %s", path) : 0;
   H5Pclose(fapl);
@@ -250,7 +251,12 @@ int hdf5_write_snapshot(const char *path, const struct snapshot_info *info,
   if (err && err_len) err[0] = '\0';
   H5Eget_auto2(H5E_DEFAULT, &old_func, &old_data);
   H5Eset_auto2(H5E_DEFAULT, NULL, NULL);
-  st = agree(tmp ? 0 : fail(err, err_len, "out of memory for %s", path), comm, err, err_len);
+  if (!tmp) st = fail(err, err_len, "out of memory for %s", path);
+  else if (p->dim < 1 || p->dim > 3 || p->dim != info->dimension)
+    st = fail(err, err_len, "%s: particles have dimension %d, header %d", path, p->dim,
+              info->dimension);
+  else st = 0;
+  st = agree(st, comm, err, err_len);
   if (!st) {
     snprintf(tmp, n, "%s.tmp", path);
     st = publish(tmp, path, write_file(tmp, info, p, comm, err, err_len), comm, err, err_len);

@@ -6,6 +6,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 /* Number type and precision of each /particles dataset as XDMF spells them. */
 #define XDMF_DOUBLE "NumberType=\"Float\" Precision=\"8\""
@@ -19,47 +20,28 @@ static void hdf_item(FILE *f, const char *indent, const char *dims, const char *
           indent, dims, type, snap, name);
 }
 
-/* A node-centred scalar attribute read straight from /particles/<name>. */
-static void scalar(FILE *f, const char *snap, long n, const char *name, const char *type) {
-  char dims[32];
-  snprintf(dims, sizeof dims, "%ld", n);
-  fprintf(f, "        <Attribute Name=\"%s\" AttributeType=\"Scalar\" Center=\"Node\">\n", name);
+/* A node-centred attribute (Scalar or Vector) read straight from /particles/<name>.
+ * 2D velocity is an N x 2 Vector read as it is. Checked with ParaView 5.11: its "XDMF Reader"
+ * pads it to 3 components (z = 0), so glyphs and magnitude work; its "Xdmf3 Reader" gives a
+ * 2-component array with the right values. The alternative, a JOIN Function of HyperSlabs
+ * with a zero z column, works in the XDMF Reader only: the Xdmf3 readers skip Function and
+ * HyperSlab items altogether (the array is missing), so plain datasets it is. */
+static void attribute(FILE *f, const char *snap, const char *name, const char *kind,
+                      const char *dims, const char *type) {
+  fprintf(f, "        <Attribute Name=\"%s\" AttributeType=\"%s\" Center=\"Node\">\n", name, kind);
   hdf_item(f, "          ", dims, type, snap, name);
   fprintf(f, "        </Attribute>\n");
 }
 
-/* Velocity as a 3-component Vector attribute. In 3D the dataset is read as it is. In 2D the
- * N x 2 dataset cannot be declared a Vector: ParaView's Xdmf3 reader always reads a Vector as
- * 3 components per tuple, so N x 2 data comes out as 2N/3 scrambled tuples. Instead a JOIN
- * Function interleaves the two columns (HyperSlabs of the dataset) with a zero z column,
- * giving an N x 3 vector that ParaView can colour by, take the magnitude of and use for glyphs. */
-static void velocity(FILE *f, const char *snap, long n, int dim) {
-  char dims[48], col[48];
-  snprintf(dims, sizeof dims, "%ld %d", n, dim);
-  fprintf(f, "        <Attribute Name=\"velocity\" AttributeType=\"Vector\" Center=\"Node\">\n");
-  if (dim == 3) {
-    hdf_item(f, "          ", dims, XDMF_DOUBLE, snap, "velocity");
-  } else {
-    snprintf(col, sizeof col, "%ld 1", n);
-    fprintf(f, "          <DataItem ItemType=\"Function\" Function=\"JOIN($0, $1, 0 * $0)\" "
-               "Dimensions=\"%ld 3\">\n", n);
-    for (int k = 0; k < 2; k++) {
-      fprintf(f, "            <DataItem ItemType=\"HyperSlab\" Dimensions=\"%s\" Type=\"HyperSlab\">\n"
-                 "              <DataItem Dimensions=\"3 2\" Format=\"XML\">0 %d 1 1 %s</DataItem>\n",
-              col, k, col);
-      hdf_item(f, "              ", dims, XDMF_DOUBLE, snap, "velocity");
-      fprintf(f, "            </DataItem>\n");
-    }
-    fprintf(f, "          </DataItem>\n");
-  }
-  fprintf(f, "        </Attribute>\n");
-}
-
-/* One Uniform Polyvertex grid for snapshot `index` at `time` with n particles. */
+/* One Uniform grid for snapshot `index` at `time` with n particles. The Polyvertex topology
+ * has no connectivity array: ParaView's "XDMF Reader" makes one vertex cell per particle (shown
+ * by the default Surface representation); its Xdmf3 readers load the points and arrays but no
+ * cells, so there the particles show with the "Point Gaussian" representation. */
 static void grid(FILE *f, int index, double time, long n, int dim) {
-  char snap[32], dims[48];
+  char snap[32], dims[48], count[32];
   snprintf(snap, sizeof snap, "snap_%05d.h5", index);
   snprintf(dims, sizeof dims, "%ld %d", n, dim);
+  snprintf(count, sizeof count, "%ld", n);
   fprintf(f, "      <Grid Name=\"snap_%05d\" GridType=\"Uniform\">\n", index);
   fprintf(f, "        <Time Value=\"%.17g\"/>\n", time);
   fprintf(f, "        <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"%ld\" "
@@ -67,12 +49,12 @@ static void grid(FILE *f, int index, double time, long n, int dim) {
   fprintf(f, "        <Geometry GeometryType=\"%s\">\n", dim == 3 ? "XYZ" : "XY");
   hdf_item(f, "          ", dims, XDMF_DOUBLE, snap, "position");
   fprintf(f, "        </Geometry>\n");
-  scalar(f, snap, n, "pressure", XDMF_DOUBLE);
-  scalar(f, snap, n, "density", XDMF_DOUBLE);
-  scalar(f, snap, n, "mass", XDMF_DOUBLE);
-  scalar(f, snap, n, "phase", XDMF_INT32);
-  scalar(f, snap, n, "id", XDMF_INT64);
-  velocity(f, snap, n, dim);
+  attribute(f, snap, "pressure", "Scalar", count, XDMF_DOUBLE);
+  attribute(f, snap, "density", "Scalar", count, XDMF_DOUBLE);
+  attribute(f, snap, "mass", "Scalar", count, XDMF_DOUBLE);
+  attribute(f, snap, "phase", "Scalar", count, XDMF_INT32);
+  attribute(f, snap, "id", "Scalar", count, XDMF_INT64);
+  attribute(f, snap, "velocity", "Vector", dims, XDMF_DOUBLE);
   fprintf(f, "      </Grid>\n");
 }
 
@@ -86,27 +68,32 @@ static void document(FILE *f, int n, const double *times, const long *counts, in
   fprintf(f, "    </Grid>\n  </Domain>\n</Xdmf>\n");
 }
 
+/* Write the document to path; 0 or the errno of the failure. */
+static int write_text(const char *path, int n, const double *times, const long *counts, int dim) {
+  FILE *f = fopen(path, "w");
+  if (!f) return errno;
+  document(f, n, times, counts, dim);
+  int e = ferror(f) ? (errno ? errno : EIO) : 0;
+  if (fclose(f) != 0 && !e) e = errno;
+  return e;
+}
+
 /* Rank 0: write dir/snapshots.xdmf (via a .tmp and rename) for snapshots 0..n-1; 0 or 3. */
 int xdmf_write_series(const char *dir, int n_snapshots, const double *times,
                       const long *n_particles, int dimension, char *err, size_t err_len) {
   size_t len = strlen(dir) + sizeof "/snapshots.xdmf.tmp";
   char *tmp = malloc(len), *path = malloc(len);
-  FILE *f = NULL;
-  int st = 3;
+  int e = ENOMEM;
   if (tmp && path) {
     snprintf(tmp, len, "%s/snapshots.xdmf.tmp", dir);
     snprintf(path, len, "%s/snapshots.xdmf", dir);
-    f = fopen(tmp, "w");
+    e = write_text(tmp, n_snapshots, times, n_particles, dimension);
+    if (!e && rename(tmp, path) != 0) e = errno;
+    if (e) unlink(tmp);
   }
-  if (f) {
-    document(f, n_snapshots, times, n_particles, dimension);
-    st = ferror(f) ? 3 : 0;
-    st = (fclose(f) != 0 || st || rename(tmp, path) != 0) ? 3 : 0;
-    if (st) remove(tmp);
-  }
-  if (st && err && err_len)
-    snprintf(err, err_len, "cannot write %s/snapshots.xdmf: %s", dir, strerror(errno));
+  if (e && err && err_len)
+    snprintf(err, err_len, "cannot write %s/snapshots.xdmf: %s", dir, strerror(e));
   free(tmp);
   free(path);
-  return st;
+  return e ? 3 : 0;
 }

@@ -26,10 +26,14 @@ struct fluid_sums {
   double div, diff, grad_p[3], visc[3];
 };
 
-static void fluid_sums(const struct engine *e, long i, const struct neighbour_ranges *r,
-                       struct fluid_sums *s, long *pairs) {
+/* Inlined with a literal dim so that the loops over components unroll. */
+static inline __attribute__((always_inline)) void fluid_sums(const struct engine *e, long i,
+                                                             const struct neighbour_ranges *r,
+                                                             struct fluid_sums *s, long *pairs,
+                                                             const int dim) {
   const struct parts *p = &e->p;
-  const int dim = p->dim, ph = p->phase[i];
+  const int ph = p->phase[i];
+  const double *vol = e->w.vol;
   *s = (struct fluid_sums){0};
   for (int k = 0; k < r->n; k++)
     for (long j = r->start[k]; j < r->start[k] + r->count[k]; j++) {
@@ -42,7 +46,7 @@ static void fluid_sums(const struct engine *e, long i, const struct neighbour_ra
       }
       if (r2 >= e->kern.support2 || j == i) continue;
       (*pairs)++;
-      double fv = kernel_f(&e->kern, r2) * p->m[j] / p->rho[j];
+      double fv = kernel_f(&e->kern, r2) * vol[j];
       double psum = p->p[j] + p->p[i];
       s->div += fv * dvdx;
       for (int d = 0; d < dim; d++) s->grad_p[d] += psum * fv * dx[d];
@@ -70,7 +74,8 @@ void pass_fluid_rhs(struct engine *e) {
       if (p->phase[i] == PHASE_WALL) continue;
       struct fluid_sums sum;
       struct phase_coef coef = coefficients(e, p->phase[i]);
-      fluid_sums(e, i, &r, &sum, &pairs);
+      if (p->dim == 2) fluid_sums(e, i, &r, &sum, &pairs, 2);
+      else fluid_sums(e, i, &r, &sum, &pairs, 3);
       e->w.drho[i] = -p->rho[i] * sum.div + coef.diffusion * sum.diff;
       for (int d = 0; d < p->dim; d++)
         e->w.dv[d][i] = (-sum.grad_p[d] + coef.viscosity * sum.visc[d]) / p->rho[i] + e->c->gravity[d];

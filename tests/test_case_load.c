@@ -1,0 +1,346 @@
+/* test_case_load.c — case file loading: defaults, every kind of error message (file, line, key
+ * path, allowed values), --set overrides, and the case_to_yaml -> case_load round trip. */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "case_load.h"
+#include "check.h"
+
+#define ERR_LEN 1024
+
+static char dir[64];
+static char path[128];
+static char err[ERR_LEN];
+
+/* The base case, one line per entry (line i + 1 of the file). */
+static const char *const BASE[] = {
+    "name: tank",
+    "dimension: 2",
+    "resolution: {dx: 0.02}",
+    "time: {end: 1.0}",
+    "domain: {min: [0, 0], max: [1, 1]}",
+    "phases:",
+    "  - {name: water, rho0: 1000, c0: 30, incompressible: true}",
+    "  - {name: air, rho0: 1, c0: 340, gamma: 1.4}",
+    "fluids:",
+    "  - {phase: water, box: {min: [0, 0], max: [1, 0.5]}}",
+    "probes:",
+    "  - {name: p0, position: [0.5, 0]}",
+    NULL};
+
+/* The base case with line `line` (1-based; one past the end appends) replaced by text. */
+static const char *variant(int line, const char *text) {
+  static char buf[4096];
+  buf[0] = '\0';
+  int i = 0;
+  for (; BASE[i]; i++) {
+    strcat(buf, i + 1 == line ? text : BASE[i]);
+    strcat(buf, "\n");
+  }
+  if (line == i + 1) {
+    strcat(buf, text);
+    strcat(buf, "\n");
+  }
+  return buf;
+}
+
+static void write_file(const char *file, const char *text) {
+  FILE *f = fopen(file, "w");
+  fputs(text, f);
+  fclose(f);
+}
+
+/* Write text as <dir>/case.yaml and load it with the overrides. */
+static int load(const char *text, int n_sets, const char *const *sets, struct case_def *c) {
+  write_file(path, text);
+  err[0] = '\0';
+  return case_load(path, n_sets, (char *const *)sets, c, err, sizeof err);
+}
+
+/* The load fails with a one-line message containing where ("case.yaml:3: key.path: ") and
+ * what (the allowed values). */
+static void expect_error(const char *text, int n_sets, const char *const *sets, const char *where,
+                         const char *what) {
+  struct case_def c;
+  CHECK(load(text, n_sets, sets, &c) == 1, "load should fail (%s)", where);
+  CHECK(strstr(err, where) != NULL, "message '%s' should contain '%s'", err, where);
+  CHECK(strstr(err, what) != NULL, "message '%s' should contain '%s'", err, what);
+  CHECK(strchr(err, '\n') == NULL, "message '%s' should be one line", err);
+}
+
+static void test_defaults(void) {
+  struct case_def c;
+  CHECK(load(variant(0, ""), 0, NULL, &c) == 0, "base case loads: %s", err);
+  CHECK(strcmp(c.name, "tank") == 0 && strcmp(c.description, "") == 0, "name, description");
+  CHECK(strcmp(c.source_file, path) == 0, "source_file %s", c.source_file);
+  CHECK(c.dimension == 2 && c.scheme == SCHEME_DELTA_PLUS && c.kernel == KERNEL_GAUSSIAN, "enums");
+  CHECK_CLOSE(c.h_over_dx, 1.33, 0, "h_over_dx default (gaussian)");
+  CHECK_CLOSE(c.cfl, 1.0, 0, "cfl default");
+  CHECK_CLOSE(c.stats_interval, 0.01, 0, "stats_interval = end/100");
+  CHECK_CLOSE(c.probes_interval, 0.01, 0, "probes_interval = stats_interval");
+  CHECK_CLOSE(c.progress_interval, 10, 0, "progress_interval");
+  CHECK(c.gravity[0] == 0 && c.gravity[1] == 0 && c.gravity[2] == 0, "gravity zero");
+  CHECK(c.n_phases == 2 && c.phases[0].incompressible == 1 && c.phases[1].incompressible == 0,
+        "phases");
+  CHECK_CLOSE(c.phases[0].gamma, 7, 0, "gamma default");
+  CHECK_CLOSE(c.phases[1].gamma, 1.4, 0, "gamma given");
+  CHECK(c.n_fluids == 1 && c.fluids[0].phase == 0 && c.fluids[0].shape.kind == SHAPE_BOX, "fluid");
+  CHECK(c.fluids[0].shape.max[2] == 0 && c.domain_max[2] == 0, "unused components are zero");
+  CHECK(c.n_walls == 0 && c.n_probes == 1 && c.probes[0].kind == PROBE_PRESSURE, "walls, probes");
+  CHECK_CLOSE(c.delta, 0.1, 0, "delta");
+  CHECK_CLOSE(c.alpha, 0.1, 0, "artificial_viscosity");
+  CHECK(c.acoustic_damper == 0 && c.shifting == SHIFTING_NONE && c.u_max == 0, "physics");
+  CHECK(c.initial_pressure == INIT_PRESSURE_HYDROSTATIC, "initial pressure");
+  CHECK_CLOSE(c.repartition_threshold, 0.1, 0, "repartition_threshold");
+  CHECK(c.repartition_every == 0 && c.max_steps == 0, "counts");
+  CHECK(load(variant(13, "kernel: wendland-c2"), 0, NULL, &c) == 0, "wendland: %s", err);
+  CHECK_CLOSE(c.h_over_dx, 2.0, 0, "h_over_dx default (wendland-c2)");
+}
+
+static void test_key_errors(void) {
+  expect_error(variant(13, "colour: red"), 0, NULL, "case.yaml:13: colour: unknown key",
+               "allowed keys: name, description, dimension");
+  expect_error(variant(10, "  - {phase: water, boxx: {min: [0, 0], max: [1, 0.5]}}"), 0, NULL,
+               "case.yaml:10: fluids.0.boxx: unknown key",
+               "allowed keys: phase, box, circle, polygon, velocity");
+  expect_error(variant(4, "time: {cfl: 0.5}"), 0, NULL, "case.yaml:4: time.end: missing required",
+               "expected a number > 0");
+  expect_error(variant(1, "description: no name"), 0, NULL, "case.yaml:1: name: missing required",
+               "[A-Za-z0-9._-]");
+  expect_error(variant(4, ""), 0, NULL, "case.yaml:1: time.end: missing required key",
+               "expected a number > 0");
+  expect_error(variant(13, "name: again"), 0, NULL, "case.yaml:13: name: duplicate key", "once");
+}
+
+static void test_value_errors(void) {
+  expect_error(variant(3, "resolution: {dx: abc}"), 0, NULL, "case.yaml:3: resolution.dx: ",
+               "got 'abc', expected a number > 0");
+  expect_error(variant(3, "resolution: {dx: -0.1}"), 0, NULL, "case.yaml:3: resolution.dx: ",
+               "got '-0.1', expected a number > 0");
+  expect_error(variant(3, "resolution: {dx: \"0.1\"}"), 0, NULL, "case.yaml:3: resolution.dx: ",
+               "got the string \"0.1\", expected a number > 0");
+  expect_error(variant(3, "resolution: {dx: .inf}"), 0, NULL, "case.yaml:3: resolution.dx: ",
+               "expected a number > 0");
+  expect_error(variant(4, "time: {end: 1, cfl: 5}"), 0, NULL, "case.yaml:4: time.cfl: ",
+               "got '5', expected a number > 0 and <= 2");
+  expect_error(variant(4, "time: {end: 1, max_steps: 1.5}"), 0, NULL, "case.yaml:4: time.max_steps",
+               "expected an integer >= 0");
+  expect_error(variant(2, "dimension: 4"), 0, NULL, "case.yaml:2: dimension: ", "expected 2 or 3");
+  expect_error(variant(13, "kernel: cubic"), 0, NULL, "case.yaml:13: kernel: got 'cubic'",
+               "allowed values: gaussian, wendland-c2");
+  expect_error(variant(7, "  - {name: water, rho0: 1000, c0: 30, incompressible: yes}"), 0, NULL,
+               "case.yaml:7: phases.0.incompressible: ", "allowed values: false, true");
+  expect_error(variant(1, "name: my tank"), 0, NULL, "case.yaml:1: name: got 'my tank'",
+               "expected a name of 1 to 63 characters from [A-Za-z0-9._-]");
+  expect_error(variant(13, "resolution: {dx: 0.1}"), 0, NULL, "case.yaml:13: resolution: duplicate",
+               "expected each key once");
+}
+
+static void test_shape_errors(void) {
+  expect_error(variant(5, "domain: {min: [0, 0, 0], max: [1, 1]}"), 0, NULL,
+               "case.yaml:5: domain.min: got a list of 3 items", "expected a list of 2 numbers (one per dimension)");
+  expect_error(variant(5, "domain: {min: [0, 0], max: [1, 0]}"), 0, NULL, "case.yaml:5: domain.max",
+               "expected max > min in every component");
+  expect_error(variant(10, "  - {phase: oil, box: {min: [0, 0], max: [1, 0.5]}}"), 0, NULL,
+               "case.yaml:10: fluids.0.phase: unknown phase 'oil'", "known phases: water, air");
+  expect_error(variant(12, "  - {name: p0, position: [2, 0.5]}"), 0, NULL,
+               "case.yaml:12: probes.0.position: got [2, 0.5] outside the domain",
+               "expected a point inside the domain min [0, 0] max [1, 1]");
+  expect_error(variant(10, "  - {phase: water, circle: {centre: [0.5, 0.5], radius: 0.6}}"), 0,
+               NULL, "case.yaml:10: fluids.0.circle: got bounding box", "inside the domain");
+  expect_error(variant(10, "  - {phase: water, box: {min: [0, 0], max: [1, 1]}, circle: {}}"), 0,
+               NULL, "case.yaml:10: fluids.0: got 2 shapes",
+               "expected exactly one of: box, circle, polygon");
+  expect_error(variant(10, "  - {phase: water, polygon: [[0, 0], [1, 0]]}"), 0, NULL,
+               "case.yaml:10: fluids.0.polygon: got a list of 2 items", "3 to 64 [x, y] vertices");
+  expect_error(variant(12, "  - {name: p0, position: [0.5, 0]}\n  - {name: p0, position: [0, 0]}"),
+               0, NULL, "case.yaml:13: probes.1.name: got 'p0' a second time", "unique names");
+}
+
+static void test_malformed(void) {
+  expect_error(variant(4, "time: {end: 1.0"), 0, NULL, "case.yaml:5: time: malformed YAML",
+               "expected valid YAML");
+  expect_error(variant(13, "  bad: indent"), 0, NULL, "case.yaml:13: probes: malformed YAML", "YAML");
+  expect_error(variant(13, "gravity: *g"), 0, NULL, "case.yaml:", "alias");
+  struct case_def c;
+  CHECK(case_load("/nonexistent/case.yaml", 0, NULL, &c, err, sizeof err) == 1 &&
+            strstr(err, "/nonexistent/case.yaml: cannot open") != NULL, "missing file: %s", err);
+}
+
+static void test_set(void) {
+  struct case_def c;
+  const char *sets[] = {"resolution.dx=0.005", "time.cfl=0.5", "fluids.0.box.max=[1, 0.25]",
+                        "physics.delta=0.2", "time.max_steps=7",
+                        "probes.1={name: p1, position: [0.25, 0.75]}", "name=renamed"};
+  CHECK(load(variant(0, ""), 7, sets, &c) == 0, "overrides apply: %s", err);
+  CHECK_CLOSE(c.dx, 0.005, 0, "existing scalar");
+  CHECK_CLOSE(c.cfl, 0.5, 0, "nested key added to a flow mapping");
+  CHECK(c.fluids[0].shape.max[0] == 1 && c.fluids[0].shape.max[1] == 0.25, "list item by index");
+  CHECK_CLOSE(c.delta, 0.2, 0, "missing mapping added");
+  CHECK(c.max_steps == 7, "missing key added");
+  CHECK(c.n_probes == 2 && strcmp(c.probes[1].name, "p1") == 0 && c.probes[1].position[1] == 0.75,
+        "list item appended");
+  CHECK(strcmp(c.name, "renamed") == 0, "top-level string");
+  const char *unknown[] = {"time.cfl=0.5", "physics.deltaa=1"};
+  expect_error(variant(0, ""), 2, unknown, "--set:2: physics.deltaa: unknown key",
+               "allowed keys: delta, artificial_viscosity");
+  const char *typo[] = {"phyiscs.delta=1"};
+  expect_error(variant(0, ""), 1, typo, "--set:1: phyiscs: unknown key", "allowed keys: name");
+  const char *no_eq[] = {"resolution.dx"};
+  expect_error(variant(0, ""), 1, no_eq, "--set:1: resolution.dx: missing '='",
+               "expected key.path=value");
+  const char *bad_flow[] = {"domain.min=[0, 0"};
+  expect_error(variant(0, ""), 1, bad_flow, "--set:1: domain.min: malformed YAML", "expected");
+  const char *bad_index[] = {"fluids.3.phase=air"};
+  expect_error(variant(0, ""), 1, bad_index, "--set:1: fluids.3: no such list item",
+               "expected an index 0 to 1");
+  const char *in_scalar[] = {"name.first=x"};
+  expect_error(variant(0, ""), 1, in_scalar, "--set:1: name.first: ", "inside the scalar");
+  const char *bad_value[] = {"time.end=-1"};
+  expect_error(variant(0, ""), 1, bad_value, "--set:1: time.end: got '-1'", "a number > 0");
+}
+
+static const char ROUND_TRIP[] =
+    "name: rt-case_1.0\n"
+    "description: \"Tank: \\\"quoted\\\" # not a comment\\tand a tab\"\n"
+    "dimension: 2\n"
+    "scheme: riemann\n"
+    "kernel: wendland-c2\n"
+    "resolution: {dx: 0.0033333333333333335, h_over_dx: 1.7}\n"
+    "gravity: [0.1, -9.81]\n"
+    "time: {end: 2.5, cfl: 0.3, max_steps: 12345}\n"
+    "output: {interval: 0.1, stats_interval: 0.003, probes_interval: 0.007, "
+    "progress_interval: 2.5}\n"
+    "domain: {min: [-0.1, -0.2], max: [3.2, 2.1]}\n"
+    "phases:\n"
+    "  - {name: water, rho0: 1000, c0: 31.3, p_background: 12.5, viscosity: 1e-3,"
+    " incompressible: true}\n"
+    "  - {name: air, rho0: 1.2, c0: 340, gamma: 1.4}\n"
+    "  - {name: oil, rho0: 870.5, c0: 45, viscosity: 0.05}\n"
+    "fluids:\n"
+    "  - {phase: water, box: {min: [0, 0], max: [1, 0.6]}, velocity: [0.5, -0.25]}\n"
+    "  - {phase: oil, circle: {centre: [2, 1], radius: 0.3}}\n"
+    "  - {phase: air, polygon: [[0, 0.6], [3, 0.6], [3, 2], [0, 2]]}\n"
+    "walls:\n"
+    "  - {box: {min: [0, 0], max: [3, 2]}, slip: no}\n"
+    "  - {circle: {centre: [2, 0.5], radius: 0.1}, fluid_side: outside}\n"
+    "  - {polygon: [[1.5, 0], [1.7, 0], [1.6, 0.2]], slip: free, fluid_side: outside}\n"
+    "physics: {delta: 0.2, artificial_viscosity: 0.02, acoustic_damper: 10, shifting: consistent,"
+    " u_max: 3.5}\n"
+    "initial: {pressure: zero}\n"
+    "probes:\n"
+    "  - {name: p_bottom, position: [1.5, 0]}\n"
+    "  - {name: p_top, kind: pressure, position: [1.5, 2.1]}\n"
+    "parallel: {repartition_threshold: 0.25, repartition_every: 100}\n";
+
+static void same_vec(const double *a, const double *b, int n, const char *what) {
+  for (int i = 0; i < n; i++) CHECK(a[i] == b[i], "%s[%d]: %.17g vs %.17g", what, i, a[i], b[i]);
+}
+
+static void same_shape(const struct shape *a, const struct shape *b, const char *what) {
+  CHECK(a->kind == b->kind && a->n_vertices == b->n_vertices, "%s kind", what);
+  same_vec(a->min, b->min, 3, what);
+  same_vec(a->max, b->max, 3, what);
+  same_vec(a->centre, b->centre, 3, what);
+  CHECK(a->radius == b->radius, "%s radius", what);
+  for (int i = 0; i < a->n_vertices; i++) same_vec(a->vertex[i], b->vertex[i], 2, what);
+}
+
+static void same_lists(const struct case_def *a, const struct case_def *b) {
+  CHECK(a->n_phases == b->n_phases && a->n_fluids == b->n_fluids && a->n_walls == b->n_walls &&
+            a->n_probes == b->n_probes, "list lengths");
+  for (int i = 0; i < a->n_phases; i++) {
+    const struct phase *p = &a->phases[i], *q = &b->phases[i];
+    CHECK(strcmp(p->name, q->name) == 0 && p->incompressible == q->incompressible, "phase %d", i);
+    CHECK(p->rho0 == q->rho0 && p->c0 == q->c0 && p->gamma == q->gamma, "phase %d EOS", i);
+    CHECK(p->p_background == q->p_background && p->viscosity == q->viscosity, "phase %d", i);
+  }
+  for (int i = 0; i < a->n_fluids; i++) {
+    CHECK(a->fluids[i].phase == b->fluids[i].phase, "fluid %d phase", i);
+    same_shape(&a->fluids[i].shape, &b->fluids[i].shape, "fluid shape");
+    same_vec(a->fluids[i].velocity, b->fluids[i].velocity, 3, "fluid velocity");
+  }
+  for (int i = 0; i < a->n_walls; i++) {
+    same_shape(&a->walls[i].shape, &b->walls[i].shape, "wall shape");
+    CHECK(a->walls[i].slip == b->walls[i].slip, "wall %d slip", i);
+    CHECK(a->walls[i].fluid_side == b->walls[i].fluid_side, "wall %d side", i);
+  }
+  for (int i = 0; i < a->n_probes; i++) {
+    CHECK(strcmp(a->probes[i].name, b->probes[i].name) == 0, "probe %d name", i);
+    CHECK(a->probes[i].kind == b->probes[i].kind, "probe %d kind", i);
+    same_vec(a->probes[i].position, b->probes[i].position, 3, "probe position");
+  }
+}
+
+static void same_case(const struct case_def *a, const struct case_def *b) {
+  CHECK(strcmp(a->name, b->name) == 0, "name %s vs %s", a->name, b->name);
+  CHECK(strcmp(a->description, b->description) == 0, "description '%s'", b->description);
+  CHECK(a->dimension == b->dimension && a->scheme == b->scheme && a->kernel == b->kernel, "enums");
+  CHECK(a->dx == b->dx && a->h_over_dx == b->h_over_dx, "resolution");
+  same_vec(a->gravity, b->gravity, 3, "gravity");
+  CHECK(a->t_end == b->t_end && a->cfl == b->cfl && a->max_steps == b->max_steps, "time");
+  CHECK(a->output_interval == b->output_interval && a->stats_interval == b->stats_interval, "out");
+  CHECK(a->probes_interval == b->probes_interval, "probes_interval");
+  CHECK(a->progress_interval == b->progress_interval, "progress_interval");
+  same_vec(a->domain_min, b->domain_min, 3, "domain_min");
+  same_vec(a->domain_max, b->domain_max, 3, "domain_max");
+  same_lists(a, b);
+  CHECK(a->initial_pressure == b->initial_pressure && a->shifting == b->shifting, "enums");
+  CHECK(a->delta == b->delta && a->alpha == b->alpha, "delta, alpha");
+  CHECK(a->acoustic_damper == b->acoustic_damper && a->u_max == b->u_max, "damper, u_max");
+  CHECK(a->repartition_threshold == b->repartition_threshold, "repartition_threshold");
+  CHECK(a->repartition_every == b->repartition_every, "repartition_every");
+}
+
+/* case_load(case_to_yaml(c)) == c, and writing it again gives the same text. */
+static void round_trip(const char *text) {
+  struct case_def a, b;
+  CHECK(load(text, 0, NULL, &a) == 0, "round-trip case loads: %s", err);
+  char *yaml = case_to_yaml(&a);
+  CHECK(load(yaml, 0, NULL, &b) == 0, "case_to_yaml output loads: %s\n%s", err, yaml);
+  same_case(&a, &b);
+  char *again = case_to_yaml(&b);
+  CHECK(strcmp(yaml, again) == 0, "stable output");
+  free(yaml);
+  free(again);
+}
+
+static void test_round_trip(void) {
+  struct case_def c;
+  round_trip(ROUND_TRIP);
+  CHECK(load(ROUND_TRIP, 0, NULL, &c) == 0, "loads: %s", err);
+  CHECK(strcmp(c.description, "Tank: \"quoted\" # not a comment\tand a tab") == 0, "escapes");
+  CHECK(c.fluids[1].phase == 2 && c.fluids[2].shape.n_vertices == 4, "fluid items");
+  CHECK(c.walls[0].slip == SLIP_NO && c.walls[1].fluid_side == FLUID_OUTSIDE, "wall items");
+  char *yaml = case_to_yaml(&c);
+  CHECK(strstr(yaml, "\ndomain:\n  min: [-0.1, -0.2]\n  max: [3.2, 2.1]\n") != NULL,
+        "block style with flow vectors:\n%s", yaml);
+  CHECK(strstr(yaml, "  - box:\n      min: [0, 0]\n") != NULL, "wall box in a list item");
+  free(yaml);
+  round_trip("name: ball\ndimension: 3\nresolution: {dx: 0.1}\ntime: {end: 1}\n"
+             "gravity: [0, 0, -9.81]\ndomain: {min: [0, 0, 0], max: [1, 1, 1]}\n"
+             "phases: [{name: w, rho0: 1000, c0: 20}]\n"
+             "fluids: [{phase: w, circle: {centre: [0.5, 0.5, 0.5], radius: 0.25}}]\n");
+  expect_error("name: p\ndimension: 3\nresolution: {dx: 0.1}\ntime: {end: 1}\n"
+               "domain: {min: [0, 0, 0], max: [1, 1, 1]}\nphases: [{name: w, rho0: 1, c0: 1}]\n"
+               "walls: [{polygon: [[0, 0], [1, 0], [0, 1]]}]\n", 0, NULL,
+               "case.yaml:7: walls.0.polygon: got a polygon in 3D", "expected box or circle");
+}
+
+int main(void) {
+  strcpy(dir, "/tmp/test_case_load.XXXXXX");
+  if (!mkdtemp(dir)) return 1;
+  snprintf(path, sizeof path, "%s/case.yaml", dir);
+  test_defaults();
+  test_key_errors();
+  test_value_errors();
+  test_shape_errors();
+  test_malformed();
+  test_set();
+  test_round_trip();
+  unlink(path);
+  rmdir(dir);
+  return check_report("test_case_load");
+}

@@ -1,0 +1,71 @@
+/* test_cells.c — the cell-list neighbours (sorted by cell and id, 3^dim stencil) equal the
+ * brute-force neighbour set on random particles, in 2D and 3D, and the sort is by (cell, id). */
+#include <stdlib.h>
+#include "check.h"
+#include "passes.h"
+
+/* Random particles in [0, 1]^dim, ids shuffled. */
+static void random_parts(struct parts *p, int dim, long n, unsigned seed) {
+  srand(seed);
+  parts_init(p, dim, n, 0);
+  for (long i = 0; i < n; i++) {
+    for (int d = 0; d < dim; d++) p->x[d][i] = rand() / (double)RAND_MAX;
+    p->id[i] = (int64_t)((i * 7919) % n);
+    p->phase[i] = 0;
+  }
+  p->n_owned = n;
+}
+
+static long brute_count(const struct parts *p, long i, double support2) {
+  long count = 0;
+  for (long j = 0; j < p->n_owned; j++) {
+    double r2 = 0;
+    for (int d = 0; d < p->dim; d++) r2 += (p->x[d][i] - p->x[d][j]) * (p->x[d][i] - p->x[d][j]);
+    count += r2 < support2;
+  }
+  return count;
+}
+
+static long cell_count_pairs(const struct space *s, const struct parts *p, long i, double support2) {
+  struct neighbour_ranges r;
+  long count = 0;
+  neighbour_ranges(s, p->cell[i], &r);
+  for (int k = 0; k < r.n; k++)
+    for (long j = r.start[k]; j < r.start[k] + r.count[k]; j++) {
+      double r2 = 0;
+      for (int d = 0; d < p->dim; d++) r2 += (p->x[d][i] - p->x[d][j]) * (p->x[d][i] - p->x[d][j]);
+      count += r2 < support2;
+    }
+  return count;
+}
+
+static void check_dim(int dim, long n, double support) {
+  struct parts p;
+  struct grid g;
+  struct space s;
+  double lo[3] = {0, 0, 0}, hi[3] = {1, 1, 1};
+  random_parts(&p, dim, n, 17u + dim);
+  grid_init(&g, dim, lo, hi, support);
+  space_init(&s, &g, 0, 1, 1);
+  int *owner = calloc(g.n_cells, sizeof(int));
+  space_set_owner(&s, owner);
+  CHECK(space_assign_cells(&s, &p, 0, n) < 0, "all particles inside");
+  space_sort(&s, &p, 0, n);
+  space_index(&s, &p);
+  long sorted = 1, mismatches = 0;
+  for (long i = 1; i < n; i++)
+    sorted &= p.cell[i - 1] < p.cell[i] || (p.cell[i - 1] == p.cell[i] && p.id[i - 1] < p.id[i]);
+  CHECK(sorted, "%dD: particles sorted by (cell, id)", dim);
+  for (long i = 0; i < n; i++)
+    mismatches += brute_count(&p, i, support * support) != cell_count_pairs(&s, &p, i, support * support);
+  CHECK(mismatches == 0, "%dD: %ld particles with a wrong neighbour count", dim, mismatches);
+  free(owner);
+  space_free(&s);
+  parts_free(&p);
+}
+
+int main(void) {
+  check_dim(2, 3000, 0.07);
+  check_dim(3, 3000, 0.15);
+  return check_report("test_cells");
+}

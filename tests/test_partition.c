@@ -1,0 +1,50 @@
+/* test_partition.c — METIS partition of the cell graph: every cell gets exactly one valid part,
+ * every part gets cells, the weights are balanced within 10 %; fewer cells than parts is an error. */
+#include <stdlib.h>
+#include <string.h>
+#include "check.h"
+#include "partition.h"
+
+static void check_parts(const struct grid *g, int n_parts, unsigned seed) {
+  int64_t *w = malloc(g->n_cells * sizeof(int64_t));
+  int *owner = malloc(g->n_cells * sizeof(int)), *count = calloc(n_parts, sizeof(int));
+  char err[256];
+  srand(seed);
+  for (long c = 0; c < g->n_cells; c++) w[c] = 1 + rand() % 64;   /* particles per cell */
+  int status = partition_cells(g, w, n_parts, MPI_COMM_WORLD, owner, err, sizeof(err));
+  CHECK(status == 0, "%d parts: partition failed: %s", n_parts, err);
+  long valid = 0;
+  for (long c = 0; c < g->n_cells; c++)
+    if (owner[c] >= 0 && owner[c] < n_parts) {
+      valid++;
+      count[owner[c]]++;
+    }
+  CHECK(valid == g->n_cells, "%d parts: %ld of %ld cells have a valid owner", n_parts, valid, g->n_cells);
+  for (int r = 0; r < n_parts; r++) CHECK(count[r] > 0, "%d parts: part %d got no cell", n_parts, r);
+  double imb = partition_imbalance(g, w, owner, n_parts);
+  CHECK(imb <= 0.10, "%d parts: weight imbalance %.3f > 0.10", n_parts, imb);
+  free(w);
+  free(owner);
+  free(count);
+}
+
+int main(int argc, char **argv) {
+  MPI_Init(&argc, &argv);
+  struct grid g2, g3, tiny;
+  double lo[3] = {0, 0, 0}, hi[3] = {1, 0.5, 0.25};
+  grid_init(&g2, 2, lo, hi, 0.01);
+  grid_init(&g3, 3, lo, hi, 0.02);
+  for (int n = 1; n <= 8; n *= 2) check_parts(&g2, n, 3u + n);
+  check_parts(&g2, 3, 99u);
+  check_parts(&g3, 4, 5u);
+  check_parts(&g3, 7, 6u);
+  grid_init(&tiny, 2, lo, hi, 0.3);   /* 3 x 1 cells */
+  int64_t w[3] = {1, 1, 1};
+  int owner[3];
+  char err[256] = "";
+  CHECK(partition_cells(&tiny, w, 4, MPI_COMM_WORLD, owner, err, sizeof(err)) == 1, "4 parts of 3 cells refused");
+  CHECK(strstr(err, "3 cells") && strstr(err, "4 ranks"), "message names the counts: %s", err);
+  int status = check_report("test_partition");
+  MPI_Finalize();
+  return status;
+}
