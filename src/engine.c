@@ -9,8 +9,8 @@
 #include "redistribute.h"
 
 #define CELL_SKIN 1.05          /* cell edge / kernel support: room for motion within a step */
-#define BALANCE_CHECK_EVERY 20  /* steps between load-balance checks */
-#define REPARTITION_MIN_GAP 100 /* steps between imbalance-triggered re-partitions */
+#define BALANCE_CHECK_EVERY 100 /* steps between load-balance checks (the timing window) */
+#define REPARTITION_MIN_GAP 500 /* steps between imbalance-triggered re-partitions */
 #define MIN_MEASURED_SECONDS 0.05  /* compute time below which timings are too noisy to use */
 
 static void report(const struct engine *e, const char *msg) {
