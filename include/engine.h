@@ -75,6 +75,9 @@ int engine_init(struct engine *e, const struct case_def *c, const char *outdir, 
 /** Run to t_end. Returns the exit status (0, 2 unstable, 3 I/O). */
 int engine_run(struct engine *e);
 
+/** Print (rank 0) the run summary: throughput, time per operation, peak memory. Collective. */
+void engine_report(struct engine *e, double loop_seconds);
+
 /** Free everything. */
 void engine_free(struct engine *e);
 

@@ -207,7 +207,8 @@ static void progress(struct engine *e) {
 
 int engine_run(struct engine *e) {
   int status = engine_output(e, 1);
-  e->next_progress = MPI_Wtime() + e->c->progress_interval;
+  double loop_start = MPI_Wtime();
+  e->next_progress = loop_start + e->c->progress_interval;
   while (!status && e->time < e->c->t_end && (!e->c->max_steps || e->step < e->c->max_steps)) {
     status = engine_step(e);
     if (!status) status = engine_rebuild(e);
@@ -218,6 +219,7 @@ int engine_run(struct engine *e) {
   if (status == 2) report(e, "run stopped: the state became unstable");
   if (status != 2 && status != 3) status = engine_output(e, 1);
   engine_close_output(e);
+  engine_report(e, MPI_Wtime() - loop_start);
   return status;
 }
 

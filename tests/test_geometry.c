@@ -1,0 +1,81 @@
+/* test_geometry.c — shapes against analytic values: inside tests, nearest boundary points
+ * (mirror points of the wall ghosts), ray lengths (hydrostatic start), lattice cover. A box and
+ * the same rectangle as a polygon must agree. */
+#include <math.h>
+#include "check.h"
+#include "geometry.h"
+
+static struct shape box2(double x0, double y0, double x1, double y1) {
+  struct shape s = {.kind = SHAPE_BOX, .min = {x0, y0, 0}, .max = {x1, y1, 0}};
+  return s;
+}
+
+static struct shape rect_polygon(double x0, double y0, double x1, double y1) {
+  struct shape s = {.kind = SHAPE_POLYGON, .n_vertices = 4,
+                    .vertex = {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}};
+  return s;
+}
+
+static void check_box_and_polygon(void) {
+  struct shape b = box2(0, 0, 2, 1), p = rect_polygon(0, 0, 2, 1);
+  double pts[6][2] = {{0.4, 0.45}, {1.9, 0.2}, {-0.3, 0.5}, {2.2, 1.3}, {1.0, -0.05}, {0.1, 0.95}};
+  for (int k = 0; k < 6; k++) {
+    double qb[3], qp[3];
+    CHECK(shape_contains(&b, 2, pts[k]) == shape_contains(&p, 2, pts[k]), "inside test point %d", k);
+    double db = shape_nearest_boundary(&b, 2, pts[k], qb), dp = shape_nearest_boundary(&p, 2, pts[k], qp);
+    CHECK_CLOSE(db, dp, 1e-14, "distance box vs polygon");
+    CHECK_CLOSE(qb[0], qp[0], 1e-14, "nearest x");
+    CHECK_CLOSE(qb[1], qp[1], 1e-14, "nearest y");
+  }
+  double x[2] = {2.2, 1.3}, q[3];
+  shape_nearest_boundary(&b, 2, x, q);   /* outside a corner: the corner */
+  CHECK(q[0] == 2 && q[1] == 1, "corner is the nearest point (%g, %g)", q[0], q[1]);
+  double up[2] = {0, 1}, y[2] = {0.5, 0.25};
+  CHECK_CLOSE(shape_ray_length(&b, 2, y, up), 0.75, 1e-14, "box ray");
+  CHECK_CLOSE(shape_ray_length(&p, 2, y, up), 0.75, 1e-14, "polygon ray");
+}
+
+static void check_circle(void) {
+  struct shape c = {.kind = SHAPE_CIRCLE, .centre = {1, 1, 1}, .radius = 0.5};
+  double in[3] = {1.2, 1.1, 1.0}, out[3] = {1.5, 1.5, 1.0}, q[3];
+  CHECK(shape_contains(&c, 3, in) && !shape_contains(&c, 3, out), "ball inside test");
+  double d = shape_nearest_boundary(&c, 3, out, q);
+  CHECK_CLOSE(d, sqrt(0.5) - 0.5, 1e-14, "distance to the sphere");
+  CHECK_CLOSE(q[0], 1 + 0.5 / sqrt(2), 1e-14, "nearest point on the sphere");
+  double dir[3] = {0, 1, 0}, centre[3] = {1, 1, 1};
+  CHECK_CLOSE(shape_ray_length(&c, 3, centre, dir), 0.5, 1e-14, "ray from the centre");
+  double below[3] = {1, 0, 1};
+  CHECK_CLOSE(shape_ray_length(&c, 3, below, dir), 1.0, 1e-14, "ray through the ball");
+}
+
+static void check_concave_polygon(void) {
+  /* an L shape: the vertical ray at x = 1.5 crosses the lower arm only */
+  struct shape l = {.kind = SHAPE_POLYGON, .n_vertices = 6,
+                    .vertex = {{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}}};
+  double a[2] = {1.5, 0.2}, b[2] = {0.5, 0.2}, up[2] = {0, 1}, corner[2] = {1.5, 1.5}, q[3];
+  CHECK_CLOSE(shape_ray_length(&l, 2, a, up), 0.8, 1e-14, "L ray, short arm");
+  CHECK_CLOSE(shape_ray_length(&l, 2, b, up), 1.8, 1e-14, "L ray, long arm");
+  CHECK(!shape_contains(&l, 2, corner), "notch is outside");
+  CHECK_CLOSE(shape_nearest_boundary(&l, 2, corner, q), 0.5, 1e-14, "notch distance");
+}
+
+static void check_lattice(void) {
+  struct lattice l;
+  double anchor[2] = {0, 0}, lo[2] = {0, 0}, hi[2] = {1, 0.5}, x[3];
+  lattice_cover(&l, 2, 0.1, anchor, lo, hi);
+  long inside = 0;
+  struct shape b = box2(0, 0, 1, 0.5);
+  for (long n = 0; n < lattice_size(&l); n++) {
+    lattice_node(&l, n, x);
+    inside += shape_contains(&b, 2, x);
+  }
+  CHECK(inside == 50, "a 1 x 0.5 box at dx 0.1 holds 50 nodes, got %ld", inside);
+}
+
+int main(void) {
+  check_box_and_polygon();
+  check_circle();
+  check_concave_polygon();
+  check_lattice();
+  return check_report("test_geometry");
+}
