@@ -50,16 +50,19 @@ deps:
 	@scripts/install-deps
 
 build/obj/%.o: src/%.c $(wildcard include/*.h) | build/obj
-	$(MPICC) $(CFLAGS) -c $< -o $@
+	@echo "CC $<"
+	@$(MPICC) $(CFLAGS) -c $< -o $@
 
 build/libmpsph.a: $(LIB_OBJ)
-	ar rcs $@ $^
+	@ar rcs $@ $^
 
 build/mpsph: build/obj/main.o build/libmpsph.a
-	$(MPICC) $(CFLAGS) $^ -o $@ $(LDLIBS)
+	@echo "LD $@"
+	@$(MPICC) $(CFLAGS) $^ -o $@ $(LDLIBS)
 
 build/tests/%: tests/%.c tests/check.h build/libmpsph.a | build/tests
-	$(MPICC) $(CFLAGS) -Itests $< build/libmpsph.a -o $@ $(LDLIBS)
+	@echo "LD $@"
+	@$(MPICC) $(CFLAGS) -Itests $< build/libmpsph.a -o $@ $(LDLIBS)
 
 build/obj build/tests:
 	mkdir -p $@

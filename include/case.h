@@ -19,6 +19,8 @@ enum slip_kind { SLIP_FREE = 0, SLIP_NO };
 enum fluid_side { FLUID_INSIDE = 0, FLUID_OUTSIDE };
 enum shifting_kind { SHIFTING_NONE = 0, SHIFTING_CONSISTENT, SHIFTING_POSITION };
 enum probe_kind { PROBE_PRESSURE = 0 };
+enum free_surface_mode { FREE_SURFACE_AUTO = 0, FREE_SURFACE_ON, FREE_SURFACE_OFF };
+enum damper_form { DAMPER_DIFFERENCE = 0, DAMPER_SYMMETRIC };
 enum init_pressure { INIT_PRESSURE_HYDROSTATIC = 0, INIT_PRESSURE_ZERO };
 
 /** A geometric shape: box {min,max}, circle {centre,radius} (disc in 2D, ball in 3D) or
@@ -47,6 +49,7 @@ struct fluid_region {
   int phase;                 /* index into case.phases */
   struct shape shape;
   double velocity[3];        /* initial velocity [m/s] */
+  double velocity_gradient[3][3];   /* u = velocity + G x: G[a][b] = du_a/dx_b [1/s] */
 };
 
 /** A wall: layers of fixed ghost particles along the boundary of a shape. */
@@ -74,6 +77,8 @@ struct case_def {
   double dx;                 /* initial particle spacing [m] */
   double h_over_dx;          /* smoothing length / dx [-] */
   double gravity[3];         /* [m/s^2] */
+  double potential_omega;    /* quadratic potential 1/2 omega^2 |x - c|^2: force -omega^2 (x - c) [1/s] */
+  double potential_centre[3];   /* [m] */
   double t_end;              /* [s] */
   double cfl;                /* [-] */
   double output_interval;    /* snapshot interval [s]; 0 = first and last only */
@@ -95,7 +100,14 @@ struct case_def {
   double alpha;              /* artificial viscosity coefficient [-] */
   double acoustic_damper;    /* alpha2 of the acoustic damper [-] */
   enum shifting_kind shifting;
-  double u_max;              /* maximum expected velocity for shifting [m/s]; 0 = sqrt(g*height) */
+  double u_max;              /* maximum expected velocity for shifting [m/s] (default: liquid c0 / 10) */
+  int tensile_control;       /* p_j - p_i for negative p_i outside the free surface (paper 000 Eq. 9) */
+  enum free_surface_mode free_surface;   /* detection: auto = on if a free surface exists at t = 0 */
+  double surface_band;       /* free-surface region: flagged particles and those within this many h */
+  int interface_mode;        /* epsilon/phi strategies of paper 000 Appendix A (4 = the final model) */
+  enum damper_form damper_form;
+  double interface_sharpness;   /* chi of the interface sharpness force (paper 000 Eq. 20), 0 = off */
+  int limit_surface_shifting;   /* apply the 0.5 U_max limiter in the free-surface region too */
   /* parallel */
   double repartition_threshold;  /* re-partition when (max-min)/mean load exceeds this */
   long repartition_every;        /* force a re-partition every N steps (0 = only on imbalance) */

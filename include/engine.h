@@ -18,21 +18,43 @@ struct engine;
 struct stage_op {
   const char *name;
   void (*pass)(struct engine *e);   /* NULL for a halo update */
-  int halo_fields;                  /* for halo updates: a HALO_* set */
+  int halo_fields;                  /* for halo updates: a mask of HF_* fields */
+  int once_per_step;                /* run at the first stage only */
   double seconds;                   /* accumulated wall time */
   long pairs;                       /* accumulated neighbour-pair evaluations */
 };
 
-enum { HALO_STATE = 1, HALO_WALLS_AND_GRADIENT = 2 };
+/** Halo field sets (bit mask). */
+enum { HF_POS = 1, HF_VEL = 2, HF_RHO = 4, HF_P = 8, HF_MASS = 16, HF_GRAD_RHO = 32, HF_SHIFT = 64,
+       HF_DIV = 128, HF_SURFACE = 256 };
 
-/** Work arrays of the scheme, sized to the particle capacity. */
+/** Terms and passes a scene needs, decided once at start-up from the case. */
+enum {
+  FEAT_WALLS = 1,          /* wall ghost interpolation */
+  FEAT_SHIFT = 2,          /* particle shifting velocity du (advection with u + du) */
+  FEAT_DELTA_U = 4,        /* the delta-u terms of continuity and momentum (consistent shifting) */
+  FEAT_DAMPER = 8,         /* acoustic damper on the liquid phases */
+  FEAT_SURFACE = 16,       /* free-surface detection (region, normals) */
+  FEAT_TIC = 32,           /* tensile instability control */
+  FEAT_SHARPNESS = 64,     /* interface sharpness force */
+  FEAT_CENTRAL = 128       /* quadratic potential body force */
+};
+
+/** Work arrays of the scheme, sized to the particle capacity; optional ones stay NULL when the
+ *  scene does not need them. */
 struct work {
   long capacity;
   double *vol;                     /* particle volume m/rho of every slot, this stage [m^dim] */
   double *grad_rho[3];             /* renormalised density gradient [kg/m^4] */
+  double *div;                     /* velocity divergence <div u> over all neighbours [1/s] */
   double *drho, *dv[3];            /* right-hand sides of the current stage */
   double *x0[3], *v0[3], *rho0;    /* state at the start of the step */
   double *sum_x[3], *sum_v[3], *sum_rho;   /* RK4 weighted sums of the stage derivatives */
+  double *du[3];                   /* FEAT_SHIFT: shifting velocity [m/s] */
+  double *surface;                 /* FEAT_SURFACE: 1 for detected free-surface particles */
+  double *region;                  /* FEAT_SURFACE: 1 in the free-surface region (band) */
+  double *normal[3];               /* FEAT_SURFACE: outward unit normal */
+  double *lambda;                  /* FEAT_SURFACE: smallest eigenvalue of the B matrix */
 };
 
 struct engine {
@@ -46,11 +68,17 @@ struct engine {
   struct work w;
   double h, vol0;                  /* smoothing length [m], dx^dim [m^dim] */
   double c_max;                    /* largest phase sound speed [m/s] */
+  unsigned features;               /* FEAT_* of the assembled pipeline */
+  int stage;                       /* current RK stage 0..3 */
+  double rho_min[CASE_MAX_PHASES]; /* global minimum density per phase (first stage) [kg/m^3] */
+  double damper_coef[CASE_MAX_PHASES + 1];  /* alpha2 c0 h of phase k at [k + 1]; 0 for gases, walls [m^2/s] */
   double time, dt;                 /* [s] */
   long step;
   int n_ops;
   struct stage_op ops[ENGINE_MAX_OPS];
   long pass_pairs;                 /* pair evaluations of the running pass */
+  long n_surface;                  /* owned particles detected on the free surface (last detection) */
+  int no_free_surface;             /* free_surface auto found none at t = 0 */
   long renorm_fallbacks;           /* particles whose renormalisation matrix was singular */
   int renorm_reported;
   /* load balance */
@@ -78,6 +106,9 @@ int engine_run(struct engine *e);
 /** Print (rank 0) the run summary: throughput, time per operation, peak memory. Collective. */
 void engine_report(struct engine *e, double loop_seconds);
 
+/** Print (stderr) the step, time, stage, id, phase and position of particle i and what tripped. */
+void engine_report_particle(const struct engine *e, long i, const char *what);
+
 /** Free everything. */
 void engine_free(struct engine *e);
 
@@ -97,8 +128,11 @@ void engine_work_reserve(struct engine *e);
 /** Evaluate the stage pipeline at the current state (skip_state_halo: the halo is fresh). */
 void engine_evaluate(struct engine *e, int skip_state_halo);
 
-/** Print (rank 0) and assemble the pipeline of the case's scheme. */
+/** Assemble the pipeline of passes and halo updates the case needs; allocate its arrays. */
 void engine_assemble(struct engine *e);
+
+/** Print the active terms and the pipeline (rank 0). */
+void engine_print_pipeline(const struct engine *e);
 
 /** Snapshot, stats and probe output when due (force = write all now). Returns 0 or 3. */
 int engine_output(struct engine *e, int force);

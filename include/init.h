@@ -23,7 +23,9 @@ int init_wall_layers(const struct case_def *c, double support);
 int init_particles(const struct case_def *c, double support, int rank, int n_ranks,
                    struct parts *p, struct init_counts *counts, char *err, size_t err_len);
 
-/** Hydrostatic gauge pressure [Pa] at x from the fluid regions above it along -gravity. */
+/** Initial gauge pressure [Pa] at x balancing the body forces: with uniform gravity the exact
+ *  weight of the fluid regions above x; with a potential or a linear initial velocity field,
+ *  integrated along the direction of the balancing acceleration. */
 double init_hydrostatic_pressure(const struct case_def *c, const double *x);
 
 #endif

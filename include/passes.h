@@ -14,15 +14,31 @@ struct neighbour_ranges {
 /** The particle ranges of the 3^dim cells around cell c (those present on this rank). */
 void neighbour_ranges(const struct space *s, long c, struct neighbour_ranges *r);
 
+/** Volumes m/rho of all slots (owned and halo) for the pair passes of this stage [m^dim]. */
+void engine_update_volumes(struct engine *e);
+
 /** Wall ghosts: Shepard interpolation of p, u at the mirror point, hydrostatic pressure
  *  correction and free-/no-slip velocity (Marrone et al. 2011). Owned ghosts only. */
 void pass_wall_ghosts(struct engine *e);
 
-/** Renormalised density gradient over same-phase neighbours (paper 000 Eq. 7). */
-void pass_density_gradient(struct engine *e);
+/** Per stage: particle volumes; renormalised density gradient over same-phase neighbours
+ *  (paper 000 Eq. 7); velocity divergence over all neighbours; with shifting, the shifting
+ *  velocity du of Eqs. 13-15. */
+void pass_gradients(struct engine *e);
 
-/** Continuity (divergence + delta-SPH diffusion) and momentum (pressure gradient, viscosity,
- *  gravity) right-hand sides of owned fluid particles. */
+/** Free-surface detection (Marrone et al. 2010): smallest eigenvalue of B over all neighbours,
+ *  normal, umbrella scan of the candidates. Sets surface, normal, lambda of owned fluid. */
+void pass_free_surface(struct engine *e);
+
+/** The free-surface region: detected particles and those within surface_band h of one. */
+void pass_surface_band(struct engine *e);
+
+/** Shifting velocity of owned fluid particle i from sum_j grad_i W_ij V_j (Eqs. 13-15). */
+void shifting_velocity(struct engine *e, long i, const double *sum_gradw, int n_neighbours);
+
+/** Continuity (divergence, delta-SPH diffusion, delta-u terms) and momentum (pressure gradient
+ *  with tensile control, viscosity, delta-u term, acoustic damper, sharpness force, body forces)
+ *  right-hand sides of owned fluid particles (paper 000 Eqs. 5-10, 16-20). */
 void pass_fluid_rhs(struct engine *e);
 
 #endif

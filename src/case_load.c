@@ -26,10 +26,12 @@ static const char *const SHIFTING_NAMES[] = {"none", "consistent", "position", N
 static const char *const PROBE_KIND_NAMES[] = {"pressure", NULL};
 static const char *const PRESSURE_NAMES[] = {"hydrostatic", "zero", NULL};
 static const char *const BOOL_NAMES[] = {"false", "true", NULL};
+static const char *const FREE_SURFACE_NAMES[] = {"auto", "on", "off", NULL};
+static const char *const DAMPER_NAMES[] = {"difference", "symmetric", NULL};
 
 /* The keys allowed in each mapping. */
 static const char *const ROOT_KEYS[] = {"name", "description", "dimension", "scheme", "kernel",
-                                        "resolution", "gravity", "time", "output", "domain",
+                                        "resolution", "gravity", "potential", "time", "output", "domain",
                                         "phases", "fluids", "walls", "physics", "initial",
                                         "probes", "parallel", NULL};
 static const char *const RESOLUTION_KEYS[] = {"dx", "h_over_dx", NULL};
@@ -40,10 +42,14 @@ static const char *const BOX_KEYS[] = {"min", "max", NULL};
 static const char *const CIRCLE_KEYS[] = {"centre", "radius", NULL};
 static const char *const PHASE_KEYS[] = {"name", "rho0", "c0", "gamma", "p_background",
                                          "viscosity", "incompressible", NULL};
-static const char *const FLUID_KEYS[] = {"phase", "box", "circle", "polygon", "velocity", NULL};
+static const char *const FLUID_KEYS[] = {"phase", "box", "circle", "polygon", "velocity",
+                                         "velocity_gradient", NULL};
+static const char *const POTENTIAL_KEYS[] = {"omega", "centre", NULL};
 static const char *const WALL_KEYS[] = {"box", "circle", "polygon", "slip", "fluid_side", NULL};
 static const char *const PHYSICS_KEYS[] = {"delta", "artificial_viscosity", "acoustic_damper",
-                                           "shifting", "u_max", NULL};
+                                           "shifting", "u_max", "tensile_control", "free_surface",
+                                           "surface_band", "interface_mode", "damper_form",
+                                           "interface_sharpness", "limit_surface_shifting", NULL};
 static const char *const INITIAL_KEYS[] = {"pressure", NULL};
 static const char *const PROBE_KEYS[] = {"name", "kind", "position", NULL};
 static const char *const PARALLEL_KEYS[] = {"repartition_threshold", "repartition_every", NULL};
@@ -66,6 +72,7 @@ static const struct rule R_NONNEGATIVE = {"a number >= 0", 0, 0, HUGE_VAL, 0};
 static const struct rule R_CFL = {"a number > 0 and <= 2", 0, 1, 2, 0};
 static const struct rule R_COUNT = {"an integer >= 0", 0, 0, 1e18, 1};
 static const struct rule R_DIMENSION = {"2 or 3", 2, 0, 3, 1};
+static const struct rule R_MODE = {"an integer from 1 to 4", 1, 0, 4, 1};
 
 /* Loader state: where messages go and the dimension read so far. */
 struct ld {
@@ -303,6 +310,21 @@ static int vec(const struct map *m, const char *key, int required, double *out) 
   return required ? missing(m, path, expected) : 0;
 }
 
+/* The dimension x dimension matrix under key (list of rows); left zero when absent. */
+static int matrix(const struct map *m, const char *key, double out[3][3]) {
+  char path[PATH_LEN], rpath[PATH_LEN], expected[96];
+  const struct ynode *v = get(m, key, path);
+  int dim = m->ld->dim;
+  snprintf(expected, sizeof expected, "a list of %d rows of %d numbers", dim, dim);
+  if (!v) return 0;
+  if (v->kind != YNODE_SEQUENCE || v->n != dim) return fail_got(m->ld, v, path, expected);
+  for (int i = 0; i < dim; i++) {
+    join_index(rpath, path, i);
+    if (vec_of(m->ld, v->entries[i].value, rpath, dim, expected, out[i])) return 1;
+  }
+  return 0;
+}
+
 /* The list under key, of lo..hi items (*seq NULL when absent and lo == 0). */
 static int list(const struct map *m, const char *key, int lo, int hi, const char *what,
                 const struct ynode **seq, char *path) {
@@ -469,7 +491,7 @@ static int shape_inside(const struct map *m, const struct shape *s, const struct
 static int read_fluid(const struct map *m, struct case_def *c, int i) {
   struct fluid_region *f = &c->fluids[i];
   return phase_index(m, c, &f->phase) || shape(m, &f->shape) || shape_inside(m, &f->shape, c) ||
-         vec(m, "velocity", 0, f->velocity);
+         vec(m, "velocity", 0, f->velocity) || matrix(m, "velocity_gradient", f->velocity_gradient);
 }
 
 static int read_wall(const struct map *m, struct case_def *c, int i) {
@@ -507,7 +529,10 @@ static int read_top(struct map *m, struct case_def *c) {
   c->dimension = m->ld->dim = (int)dim;
   c->scheme = (enum scheme_kind)scheme;
   c->kernel = (enum kernel_kind)kernel;
-  return vec(m, "gravity", 0, c->gravity);
+  struct map pot;
+  return vec(m, "gravity", 0, c->gravity) || sub(m, "potential", POTENTIAL_KEYS, &pot) ||
+         num(&pot, "omega", &R_NONNEGATIVE, 0, &c->potential_omega) ||
+         vec(&pot, "centre", 0, c->potential_centre);
 }
 
 static int read_run(const struct map *root, struct case_def *c) {
@@ -539,22 +564,53 @@ static int read_contents(const struct map *root, struct case_def *c) {
                    &c->n_probes);
 }
 
-static int read_options(const struct map *root, struct case_def *c) {
-  struct map ph, in, pa;
-  int shifting, pressure;
+/* Default maximum expected velocity: the c0 = 10 U_max rule of paper 000 read backwards, from
+ * the largest sound speed of the liquids (of all phases when there is no liquid). */
+static double default_u_max(const struct case_def *c) {
+  double c_liquid = 0, c_any = 0;
+  for (int i = 0; i < c->n_phases; i++) {
+    c_any = fmax(c_any, c->phases[i].c0);
+    if (c->phases[i].incompressible) c_liquid = fmax(c_liquid, c->phases[i].c0);
+  }
+  return (c_liquid > 0 ? c_liquid : c_any) / 10.0;
+}
+
+static int read_physics(const struct map *root, struct case_def *c) {
+  struct map ph;
+  int shifting, tic, fs, form, limit;
+  double mode;
   if (sub(root, "physics", PHYSICS_KEYS, &ph) ||
       num(&ph, "delta", &R_NONNEGATIVE, 0.1, &c->delta) ||
       num(&ph, "artificial_viscosity", &R_NONNEGATIVE, 0.1, &c->alpha) ||
-      num(&ph, "acoustic_damper", &R_NONNEGATIVE, 0, &c->acoustic_damper) ||
-      choice(&ph, "shifting", SHIFTING_NAMES, SHIFTING_NONE, &shifting) ||
-      num(&ph, "u_max", &R_NONNEGATIVE, 0, &c->u_max) ||
-      sub(root, "initial", INITIAL_KEYS, &in) ||
+      num(&ph, "acoustic_damper", &R_NONNEGATIVE, 10, &c->acoustic_damper) ||
+      choice(&ph, "shifting", SHIFTING_NAMES, SHIFTING_CONSISTENT, &shifting) ||
+      num(&ph, "u_max", &R_POSITIVE, default_u_max(c), &c->u_max) ||
+      choice(&ph, "tensile_control", BOOL_NAMES, 1, &tic) ||
+      choice(&ph, "free_surface", FREE_SURFACE_NAMES, FREE_SURFACE_AUTO, &fs) ||
+      num(&ph, "surface_band", &R_NONNEGATIVE, 2.0, &c->surface_band) ||
+      num(&ph, "interface_mode", &R_MODE, 4, &mode) ||
+      choice(&ph, "damper_form", DAMPER_NAMES, DAMPER_SYMMETRIC, &form) ||
+      num(&ph, "interface_sharpness", &R_NONNEGATIVE, 0, &c->interface_sharpness) ||
+      choice(&ph, "limit_surface_shifting", BOOL_NAMES, 0, &limit))
+    return 1;
+  c->shifting = (enum shifting_kind)shifting;
+  c->tensile_control = tic;
+  c->free_surface = (enum free_surface_mode)fs;
+  c->interface_mode = (int)mode;
+  c->damper_form = (enum damper_form)form;
+  c->limit_surface_shifting = limit;
+  return 0;
+}
+
+static int read_options(const struct map *root, struct case_def *c) {
+  struct map in, pa;
+  int pressure;
+  if (read_physics(root, c) || sub(root, "initial", INITIAL_KEYS, &in) ||
       choice(&in, "pressure", PRESSURE_NAMES, INIT_PRESSURE_HYDROSTATIC, &pressure) ||
       sub(root, "parallel", PARALLEL_KEYS, &pa) ||
       num(&pa, "repartition_threshold", &R_POSITIVE, 0.1, &c->repartition_threshold) ||
       lnum(&pa, "repartition_every", &R_COUNT, 0, &c->repartition_every))
     return 1;
-  c->shifting = (enum shifting_kind)shifting;
   c->initial_pressure = (enum init_pressure)pressure;
   return 0;
 }
@@ -673,6 +729,9 @@ static void put_head(FILE *f, const struct case_def *c) {
   put_num(f, "  ", "dx", c->dx);
   put_num(f, "  ", "h_over_dx", c->h_over_dx);
   put_vec(f, "", "gravity", c->gravity, dim);
+  fputs("potential:\n", f);
+  put_num(f, "  ", "omega", c->potential_omega);
+  put_vec(f, "  ", "centre", c->potential_centre, dim);
   fputs("time:\n", f);
   put_num(f, "  ", "end", c->t_end);
   put_num(f, "  ", "cfl", c->cfl);
@@ -704,6 +763,12 @@ static void put_bodies(FILE *f, const struct case_def *c) {
     put_str(f, "  - ", "phase", c->phases[c->fluids[i].phase].name);
     put_shape(f, "    ", "      ", &c->fluids[i].shape, c->dimension);
     put_vec(f, "    ", "velocity", c->fluids[i].velocity, c->dimension);
+    fputs("    velocity_gradient: [", f);
+    for (int a = 0; a < c->dimension; a++) {
+      fputs(a ? ", " : "", f);
+      put_flow_vec(f, c->fluids[i].velocity_gradient[a], c->dimension);
+    }
+    fputs("]\n", f);
   }
   put_list_key(f, "walls", c->n_walls);
   for (int i = 0; i < c->n_walls; i++) {
@@ -720,6 +785,13 @@ static void put_tail(FILE *f, const struct case_def *c) {
   put_num(f, "  ", "acoustic_damper", c->acoustic_damper);
   put_word(f, "  ", "shifting", SHIFTING_NAMES[c->shifting]);
   put_num(f, "  ", "u_max", c->u_max);
+  put_word(f, "  ", "tensile_control", BOOL_NAMES[c->tensile_control != 0]);
+  put_word(f, "  ", "free_surface", FREE_SURFACE_NAMES[c->free_surface]);
+  put_num(f, "  ", "surface_band", c->surface_band);
+  put_long(f, "  ", "interface_mode", c->interface_mode);
+  put_word(f, "  ", "damper_form", DAMPER_NAMES[c->damper_form]);
+  put_num(f, "  ", "interface_sharpness", c->interface_sharpness);
+  put_word(f, "  ", "limit_surface_shifting", BOOL_NAMES[c->limit_surface_shifting != 0]);
   fputs("initial:\n", f);
   put_word(f, "  ", "pressure", PRESSURE_NAMES[c->initial_pressure]);
   put_list_key(f, "probes", c->n_probes);

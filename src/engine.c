@@ -79,12 +79,14 @@ int engine_repartition(struct engine *e) {
   return 0;
 }
 
-/* Print the particle that triggered a stop, on the rank that owns it. */
-static void report_particle(const struct engine *e, long i, const char *what) {
+void engine_report_particle(const struct engine *e, long i, const char *what) {
   const struct parts *p = &e->p;
-  fprintf(stderr, "mpsph: unstable at step %ld, t = %.9g s: particle %lld (phase %d) at (%g, %g%s%g) %s\n",
-          e->step, e->time, (long long)p->id[i], p->phase[i], p->x[0][i], p->x[1][i],
-          p->dim == 3 ? ", " : "", p->dim == 3 ? p->x[2][i] : 0.0, what);
+  char pos[96];
+  if (p->dim == 2) snprintf(pos, sizeof pos, "(%.9g, %.9g)", p->x[0][i], p->x[1][i]);
+  else snprintf(pos, sizeof pos, "(%.9g, %.9g, %.9g)", p->x[0][i], p->x[1][i], p->x[2][i]);
+  fprintf(stderr, "mpsph: unstable at step %ld, t = %.9g s, RK stage %d: particle %lld (phase %d) at %s "
+          "with density %.6g kg/m^3, pressure %.6g Pa: %s\n", e->step, e->time, e->stage + 1,
+          (long long)p->id[i], p->phase[i], pos, p->rho[i], p->p[i], what);
 }
 
 int engine_rebuild(struct engine *e) {
@@ -92,7 +94,7 @@ int engine_rebuild(struct engine *e) {
   long bad = space_assign_cells(&e->space, &e->p, 0, e->p.n_owned);
   int any = bad >= 0, any_all;
   MPI_Allreduce(&any, &any_all, 1, MPI_INT, MPI_MAX, e->comm);
-  if (bad >= 0) report_particle(e, bad, "left the domain");
+  if (bad >= 0) engine_report_particle(e, bad, "left the domain");
   if (any_all) return 2;
   int64_t lost = halo_migrate(&e->halo, &e->space, &e->p);
   if (lost >= 0) {
@@ -188,10 +190,34 @@ int engine_init(struct engine *e, const struct case_def *c, const char *outdir, 
   MPI_Comm_size(comm, &e->n_ranks);
   e->wall_start = MPI_Wtime();
   e->last_snapshot_step = e->last_stats_step = e->last_probes_step = -1;
-  if (setup_space(e) || setup_particles(e)) return 1;
-  e->n_repartitions = 0;
+  if (setup_space(e)) return 1;
   engine_assemble(e);
+  if (setup_particles(e)) return 1;
+  e->n_repartitions = 0;
+  engine_print_pipeline(e);
   return engine_open_output(e);
+}
+
+/* free_surface: auto — after the first step, switch detection off if no particle was found on a
+ * free surface at t = 0 (a closed tank full of fluid), and drop its passes and arrays. */
+static void free_surface_auto(struct engine *e) {
+  long n = e->n_surface;
+  if (e->c->free_surface != FREE_SURFACE_AUTO || !(e->features & FEAT_SURFACE)) return;
+  MPI_Allreduce(MPI_IN_PLACE, &n, 1, MPI_LONG, MPI_SUM, e->comm);
+  if (e->rank == 0)
+    printf("free surface: %ld particles detected at t = 0: detection %s\n", n, n ? "kept" : "switched off");
+  if (n) return;
+  e->no_free_surface = 1;
+  free(e->w.surface);
+  free(e->w.region);
+  free(e->w.lambda);
+  e->w.surface = e->w.region = e->w.lambda = NULL;
+  for (int d = 0; d < 3; d++) {
+    free(e->w.normal[d]);
+    e->w.normal[d] = NULL;
+  }
+  engine_assemble(e);
+  engine_print_pipeline(e);
 }
 
 static void progress(struct engine *e) {
@@ -211,6 +237,7 @@ int engine_run(struct engine *e) {
   e->next_progress = loop_start + e->c->progress_interval;
   while (!status && e->time < e->c->t_end && (!e->c->max_steps || e->step < e->c->max_steps)) {
     status = engine_step(e);
+    if (!status && e->step == 1) free_surface_auto(e);
     if (!status) status = engine_rebuild(e);
     if (!status) status = balance(e);
     if (!status) status = engine_output(e, 0);
@@ -225,6 +252,8 @@ int engine_run(struct engine *e) {
 
 void engine_free(struct engine *e) {
   for (int d = 0; d < 3; d++) {
+    free(e->w.du[d]);
+    free(e->w.normal[d]);
     free(e->w.grad_rho[d]);
     free(e->w.dv[d]);
     free(e->w.x0[d]);
@@ -233,6 +262,10 @@ void engine_free(struct engine *e) {
     free(e->w.sum_v[d]);
   }
   free(e->w.vol);
+  free(e->w.div);
+  free(e->w.surface);
+  free(e->w.region);
+  free(e->w.lambda);
   free(e->w.drho);
   free(e->w.rho0);
   free(e->w.sum_rho);

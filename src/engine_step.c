@@ -4,17 +4,19 @@
 #include "eos.h"
 #include "passes.h"
 
-enum { HF_POS = 1, HF_VEL = 2, HF_RHO = 4, HF_P = 8, HF_MASS = 16, HF_GRAD_RHO = 32 };
-
 static double *grow(double *a, long n) {
   double *q = realloc(a, (n ? n : 1) * sizeof(double));
   if (!q) abort();
   return q;
 }
 
+/* Grow an optional array only when its feature is on. */
+static double *grow_if(double *a, long n, int on) { return on ? grow(a, n) : a; }
+
 void engine_work_reserve(struct engine *e) {
   struct work *w = &e->w;
   long n = e->p.capacity;
+  unsigned f = e->features;
   if (n <= w->capacity) return;
   for (int d = 0; d < e->p.dim; d++) {
     w->grad_rho[d] = grow(w->grad_rho[d], n);
@@ -23,11 +25,17 @@ void engine_work_reserve(struct engine *e) {
     w->v0[d] = grow(w->v0[d], n);
     w->sum_x[d] = grow(w->sum_x[d], n);
     w->sum_v[d] = grow(w->sum_v[d], n);
+    w->du[d] = grow_if(w->du[d], n, f & FEAT_SHIFT);
+    w->normal[d] = grow_if(w->normal[d], n, f & FEAT_SURFACE);
   }
   w->vol = grow(w->vol, n);
+  w->div = grow(w->div, n);
   w->drho = grow(w->drho, n);
   w->rho0 = grow(w->rho0, n);
   w->sum_rho = grow(w->sum_rho, n);
+  w->surface = grow_if(w->surface, n, f & FEAT_SURFACE);
+  w->region = grow_if(w->region, n, f & FEAT_SURFACE);
+  w->lambda = grow_if(w->lambda, n, f & FEAT_SURFACE);
   w->capacity = n;
 }
 
@@ -39,35 +47,89 @@ static int halo_field_list(struct engine *e, int mask, double **f) {
     if (mask & HF_POS) f[n++] = p->x[d];
     if (mask & HF_VEL) f[n++] = p->v[d];
     if (mask & HF_GRAD_RHO) f[n++] = e->w.grad_rho[d];
+    if (mask & HF_SHIFT) f[n++] = e->w.du[d];
   }
   if (mask & HF_RHO) f[n++] = p->rho;
   if (mask & HF_P) f[n++] = p->p;
   if (mask & HF_MASS) f[n++] = p->m;
+  if (mask & HF_DIV) f[n++] = e->w.div;
+  if (mask & HF_SURFACE) f[n++] = e->w.surface;
   return n;
 }
 
-static void add_op(struct engine *e, const char *name, void (*pass)(struct engine *), int mask) {
-  e->ops[e->n_ops++] = (struct stage_op){.name = name, .pass = pass, .halo_fields = mask};
+static void add_op(struct engine *e, const char *name, void (*pass)(struct engine *), int mask,
+                   int once) {
+  e->ops[e->n_ops++] = (struct stage_op){.name = name, .pass = pass, .halo_fields = mask,
+                                         .once_per_step = once};
+}
+
+/* The terms this case needs (DESIGN.md data flow 3: what a scene does not use is not computed). */
+static unsigned case_features(const struct engine *e) {
+  const struct case_def *c = e->c;
+  unsigned f = 0;
+  int liquid = 0;
+  for (int ph = 0; ph < c->n_phases; ph++) liquid |= c->phases[ph].incompressible;
+  if (c->n_walls) f |= FEAT_WALLS;
+  if (c->shifting != SHIFTING_NONE) f |= FEAT_SHIFT;
+  if (c->shifting == SHIFTING_CONSISTENT) f |= FEAT_DELTA_U;
+  if (c->acoustic_damper > 0 && liquid) f |= FEAT_DAMPER;
+  if (c->free_surface != FREE_SURFACE_OFF && !e->no_free_surface && (c->tensile_control || (f & FEAT_SHIFT)))
+    f |= FEAT_SURFACE;
+  if (c->tensile_control) f |= FEAT_TIC;
+  if (c->interface_sharpness > 0 && c->n_phases > 1) f |= FEAT_SHARPNESS;
+  if (c->potential_omega > 0) f |= FEAT_CENTRAL;
+  return f;
+}
+
+/* alpha2 c0 h of each liquid phase (index phase + 1; walls at 0), 0 for gases. */
+static void damper_coefficients(struct engine *e) {
+  e->damper_coef[0] = 0;
+  for (int ph = 0; ph < e->c->n_phases; ph++) {
+    const struct phase *f = &e->c->phases[ph];
+    e->damper_coef[ph + 1] = (e->features & FEAT_DAMPER) && f->incompressible ? e->c->acoustic_damper * f->c0 * e->h : 0;
+  }
 }
 
 void engine_assemble(struct engine *e) {
-  int walls = e->c->n_walls > 0;
+  unsigned f = e->features = case_features(e);
+  damper_coefficients(e);
   e->n_ops = 0;
-  add_op(e, "halo: positions, velocities, densities, pressures", NULL, HF_POS | HF_VEL | HF_RHO | HF_P);
-  if (walls) add_op(e, "wall ghosts: Shepard interpolation at mirror points", pass_wall_ghosts, 0);
-  add_op(e, "density gradient: renormalised, same phase", pass_density_gradient, 0);
-  add_op(e, walls ? "halo: density gradients, wall ghost values" : "halo: density gradients", NULL,
-         HF_GRAD_RHO | (walls ? HF_VEL | HF_RHO | HF_P | HF_MASS : 0));
-  add_op(e, "fluid rhs: continuity + delta diffusion, pressure, viscosity, gravity", pass_fluid_rhs, 0);
+  add_op(e, "halo: positions, velocities, densities, pressures", NULL, HF_POS | HF_VEL | HF_RHO | HF_P, 0);
+  if (f & FEAT_WALLS) {
+    add_op(e, "wall ghosts: Shepard interpolation at mirror points", pass_wall_ghosts, 0, 0);
+    add_op(e, "halo: wall ghost values", NULL, HF_VEL | HF_RHO | HF_P | HF_MASS, 0);
+  }
+  if (f & FEAT_SURFACE) {
+    add_op(e, "free surface: eigenvalue + umbrella detection, normals (once per step)", pass_free_surface, 0, 1);
+    add_op(e, "halo: free-surface flags (once per step)", NULL, HF_SURFACE, 1);
+    add_op(e, "free-surface region: band around the detected particles (once per step)", pass_surface_band, 0, 1);
+  }
+  add_op(e, (f & FEAT_SHIFT) ? "gradients: renormalised density gradient, div u, shifting velocity"
+                             : "gradients: renormalised density gradient, div u", pass_gradients, 0, 0);
+  add_op(e, "halo: gradient-pass results", NULL,
+         HF_GRAD_RHO | ((f & FEAT_SHIFT) ? HF_SHIFT : 0) | ((f & FEAT_DAMPER) ? HF_DIV : 0), 0);
+  add_op(e, "fluid rhs: continuity and momentum", pass_fluid_rhs, 0, 0);
+  engine_work_reserve(e);
+}
+
+/** Print the assembled pipeline and the active terms (rank 0). */
+void engine_print_pipeline(const struct engine *e) {
+  static const char *names[] = {"wall ghosts", "shifting", "delta-u terms", "acoustic damper",
+                                "free-surface detection", "tensile instability control",
+                                "interface sharpness", "quadratic potential"};
   if (e->rank) return;
-  printf("pipeline per RK stage (%d operations):\n", e->n_ops);
+  printf("terms:");
+  for (int k = 0; k < 8; k++)
+    if (e->features & (1u << k)) printf(" [%s]", names[k]);
+  printf("\npipeline per RK stage (%d operations):\n", e->n_ops);
   for (int k = 0; k < e->n_ops; k++) printf("  %d. %s\n", k + 1, e->ops[k].name);
 }
 
 void engine_evaluate(struct engine *e, int skip_state_halo) {
-  double *fields[16];
+  double *fields[32];
   for (int k = skip_state_halo ? 1 : 0; k < e->n_ops; k++) {
     struct stage_op *op = &e->ops[k];
+    if (op->once_per_step && e->stage > 0) continue;
     double t0 = MPI_Wtime();
     if (op->pass) {
       e->pass_pairs = 0;
@@ -81,23 +143,52 @@ void engine_evaluate(struct engine *e, int skip_state_halo) {
   }
 }
 
-/* Global time step from the first-stage accelerations: acoustic, acceleration, viscous limits. */
-static double time_step(struct engine *e) {
-  const struct case_def *c = e->c;
+/* Global maximum acceleration and minimum density per phase from the first stage. */
+static double reduce_first_stage(struct engine *e) {
+  const struct parts *p = &e->p;
+  int np = e->c->n_phases;
   double a_max = 0;
-  for (long i = 0; i < e->p.n_owned; i++) {
-    if (e->p.phase[i] == PHASE_WALL) continue;
+  for (int ph = 0; ph < np; ph++) e->rho_min[ph] = INFINITY;
+  for (long i = 0; i < p->n_owned; i++) {
+    int ph = p->phase[i];
+    if (ph == PHASE_WALL) continue;
     double a2 = 0;
-    for (int d = 0; d < e->p.dim; d++) a2 += e->w.dv[d][i] * e->w.dv[d][i];
+    for (int d = 0; d < p->dim; d++) a2 += e->w.dv[d][i] * e->w.dv[d][i];
     if (!(a2 <= a_max)) a_max = a2;   /* NaN propagates into a_max */
+    e->rho_min[ph] = fmin(e->rho_min[ph], p->rho[i]);
   }
   MPI_Allreduce(MPI_IN_PLACE, &a_max, 1, MPI_DOUBLE, MPI_MAX, e->comm);
-  double dt = c->cfl * e->h / e->c_max;
-  if (a_max > 0) dt = fmin(dt, 0.25 * sqrt(e->h / sqrt(a_max)));
+  MPI_Allreduce(MPI_IN_PLACE, e->rho_min, np, MPI_DOUBLE, MPI_MIN, e->comm);
+  return sqrt(a_max);
+}
+
+/* The stable sound speed of Eq. 12 for every liquid/gas pair present:
+ * c_stab = c0_l sqrt(gamma_g rho0_l / (gamma_l rho_min_g)) (Sun et al. 2021). */
+static double stable_sound_speed(const struct engine *e) {
+  const struct case_def *c = e->c;
+  double c_stab = 0;
+  for (int l = 0; l < c->n_phases; l++)
+    for (int g = 0; g < c->n_phases; g++) {
+      const struct phase *pl = &c->phases[l], *pg = &c->phases[g];
+      if (!pl->incompressible || pg->incompressible || !isfinite(e->rho_min[g])) continue;
+      c_stab = fmax(c_stab, pl->c0 * sqrt(pg->gamma * pl->rho0 / (pl->gamma * e->rho_min[g])));
+    }
+  return c_stab;
+}
+
+/* Global time step of paper 000 Eq. 12: acoustic (with c_stab), acceleration, viscous, damper. */
+static double time_step(struct engine *e) {
+  const struct case_def *c = e->c;
+  double a_max = reduce_first_stage(e);
+  double c_eff = fmax(e->c_max, stable_sound_speed(e));
+  double dt = c->cfl * e->h / c_eff;
+  if (a_max > 0) dt = fmin(dt, 0.25 * sqrt(e->h / a_max));
   for (int ph = 0; ph < c->n_phases; ph++) {
     const struct phase *f = &c->phases[ph];
     if (c->alpha > 0) dt = fmin(dt, e->h / (c->alpha * f->c0));
     if (f->viscosity > 0) dt = fmin(dt, 0.125 * e->h * e->h * f->rho0 / f->viscosity);
+    if ((e->features & FEAT_DAMPER) && f->incompressible)
+      dt = fmin(dt, c->cfl * e->h / (c->acoustic_damper * f->c0));
   }
   return fmin(dt, c->t_end - e->time);
 }
@@ -113,7 +204,8 @@ static void save_state(struct engine *e) {
   }
 }
 
-/* Accumulate stage s's derivatives with RK4 weight and move owned fluid to the next stage state. */
+/* Accumulate stage s's derivatives with RK4 weight and move owned fluid to the next stage state.
+ * Positions advance with u + du (du = 0 without shifting). */
 static void rk4_update(struct engine *e, int s) {
   static const double weight[4] = {1, 2, 2, 1}, next[3] = {0.5, 0.5, 1.0};
   struct parts *p = &e->p;
@@ -122,24 +214,52 @@ static void rk4_update(struct engine *e, int s) {
   for (long i = 0; i < p->n_owned; i++) {
     if (p->phase[i] == PHASE_WALL) continue;
     for (int d = 0; d < p->dim; d++) {
-      w->sum_x[d][i] = (s ? w->sum_x[d][i] : 0) + ws * p->v[d][i];
+      double dxdt = p->v[d][i] + (w->du[d] ? w->du[d][i] : 0.0);
+      w->sum_x[d][i] = (s ? w->sum_x[d][i] : 0) + ws * dxdt;
       w->sum_v[d][i] = (s ? w->sum_v[d][i] : 0) + ws * w->dv[d][i];
-    }
-    w->sum_rho[i] = (s ? w->sum_rho[i] : 0) + ws * w->drho[i];
-    for (int d = 0; d < p->dim; d++) {
-      p->x[d][i] = w->x0[d][i] + step * (s < 3 ? p->v[d][i] : w->sum_x[d][i]);
+      p->x[d][i] = w->x0[d][i] + step * (s < 3 ? dxdt : w->sum_x[d][i]);
       p->v[d][i] = w->v0[d][i] + step * (s < 3 ? w->dv[d][i] : w->sum_v[d][i]);
     }
+    w->sum_rho[i] = (s ? w->sum_rho[i] : 0) + ws * w->drho[i];
     p->rho[i] = w->rho0[i] + step * (s < 3 ? w->drho[i] : w->sum_rho[i]);
     p->p[i] = eos_pressure(&e->c->phases[p->phase[i]], p->rho[i]);
   }
+}
+
+/* The first owned fluid particle with a non-finite derivative; its quantity in *what. */
+static long first_non_finite(const struct engine *e, const char **what) {
+  const struct parts *p = &e->p;
+  for (long i = 0; i < p->n_owned; i++) {
+    if (p->phase[i] == PHASE_WALL) continue;
+    *what = "drho/dt";
+    if (!isfinite(e->w.drho[i])) return i;
+    for (int d = 0; d < p->dim; d++) {
+      *what = "du/dt";
+      if (!isfinite(e->w.dv[d][i])) return i;
+      *what = "shifting velocity";
+      if (e->w.du[d] && !isfinite(e->w.du[d][i])) return i;
+    }
+  }
+  return -1;
+}
+
+/* Stop with a diagnosis if any rank holds a non-finite derivative. Returns 0 or 2. */
+static int check_finite(struct engine *e) {
+  const char *what = "";
+  long bad = first_non_finite(e, &what);
+  int any = bad >= 0;
+  MPI_Allreduce(MPI_IN_PLACE, &any, 1, MPI_INT, MPI_MAX, e->comm);
+  if (bad >= 0) engine_report_particle(e, bad, what);
+  return any ? 2 : 0;
 }
 
 int engine_step(struct engine *e) {
   engine_work_reserve(e);
   save_state(e);
   for (int s = 0; s < 4; s++) {
+    e->stage = s;
     engine_evaluate(e, s == 0);
+    if (check_finite(e)) return 2;
     if (s == 0) {
       e->dt = time_step(e);
       if (!(e->dt > 0) || !isfinite(e->dt)) return 2;

@@ -1,6 +1,7 @@
 /* init.c — initial particle generation. */
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include "eos.h"
 #include "geometry.h"
@@ -40,7 +41,67 @@ static int ghost_of(const struct case_def *c, int w, double thickness, const dou
   return d <= thickness * (1 + BOUNDARY_TOL) && d >= 0.5 * c->dx * (1 - BOUNDARY_TOL);
 }
 
+/* The fluid region containing x, or -1. */
+static int region_at(const struct case_def *c, const double *x) {
+  for (int k = 0; k < c->n_fluids; k++)
+    if (shape_contains(&c->fluids[k].shape, c->dimension, x)) return k;
+  return -1;
+}
+
+/* Initial velocity of region k at x: velocity + G x. */
+static void region_velocity(const struct case_def *c, int k, const double *x, double *u) {
+  for (int a = 0; a < c->dimension; a++) {
+    u[a] = c->fluids[k].velocity[a];
+    for (int b = 0; b < c->dimension; b++) u[a] += c->fluids[k].velocity_gradient[a][b] * x[b];
+  }
+}
+
+/* Acceleration the pressure must balance at x in region k: body force minus the convective
+ * acceleration (u.grad)u = G u of the initial linear velocity field. */
+static void effective_acceleration(const struct case_def *c, int k, const double *x, double *a) {
+  double u[3], w2 = c->potential_omega * c->potential_omega;
+  region_velocity(c, k, x, u);
+  for (int i = 0; i < c->dimension; i++) {
+    a[i] = c->gravity[i] - w2 * (x[i] - c->potential_centre[i]);
+    for (int j = 0; j < c->dimension; j++) a[i] -= c->fluids[k].velocity_gradient[i][j] * u[j];
+  }
+}
+
+/* 1 if the case has only uniform gravity and uniform initial velocities. */
+static int uniform_forcing(const struct case_def *c) {
+  if (c->potential_omega > 0) return 0;
+  for (int k = 0; k < c->n_fluids; k++)
+    for (int a = 0; a < c->dimension; a++)
+      for (int b = 0; b < c->dimension; b++)
+        if (c->fluids[k].velocity_gradient[a][b] != 0) return 0;
+  return 1;
+}
+
+/* p(x) = integral of rho (-a . d) ds along the straight ray from x in the direction d = -a/|a| of
+ * the balancing acceleration at x, midpoint rule with steps of dx/8, until the domain ends. */
+static double marched_pressure(const struct case_def *c, const double *x) {
+  int k0 = region_at(c, x), dim = c->dimension;
+  double a[3], dir[3], len = 0, ds = c->dx / 8, p = 0;
+  if (k0 < 0) return 0;
+  effective_acceleration(c, k0, x, a);
+  for (int d = 0; d < dim; d++) len += a[d] * a[d];
+  if (len == 0) return 0;
+  for (int d = 0; d < dim; d++) dir[d] = -a[d] / sqrt(len);
+  for (double s = 0.5 * ds;; s += ds) {
+    double y[3] = {0, 0, 0}, ay[3], along = 0;
+    for (int d = 0; d < dim; d++) y[d] = x[d] + s * dir[d];
+    for (int d = 0; d < dim; d++)
+      if (y[d] < c->domain_min[d] || y[d] > c->domain_max[d]) return p;
+    int k = region_at(c, y);
+    if (k < 0) continue;
+    effective_acceleration(c, k, y, ay);
+    for (int d = 0; d < dim; d++) along -= ay[d] * dir[d];
+    p += c->phases[c->fluids[k].phase].rho0 * along * ds;
+  }
+}
+
 double init_hydrostatic_pressure(const struct case_def *c, const double *x) {
+  if (!uniform_forcing(c)) return marched_pressure(c, x);
   double g = 0, up[3] = {0, 0, 0};
   for (int d = 0; d < c->dimension; d++) g += c->gravity[d] * c->gravity[d];
   g = sqrt(g);
@@ -68,9 +129,11 @@ static void add_fluid(const struct case_def *c, int k, const double *x, int64_t 
   parts_reserve(p, p->n_owned);
   double pressure = ph->p_background;
   if (c->initial_pressure == INIT_PRESSURE_HYDROSTATIC) pressure += init_hydrostatic_pressure(c, x);
+  double u[3];
+  region_velocity(c, k, x, u);
   for (int d = 0; d < c->dimension; d++) {
     p->x[d][i] = x[d];
-    p->v[d][i] = c->fluids[k].velocity[d];
+    p->v[d][i] = u[d];
   }
   p->p[i] = pressure;
   p->rho[i] = eos_density(ph, pressure);
@@ -153,30 +216,75 @@ static int inside_domain(const struct case_def *c, const double *x) {
   return 1;
 }
 
+/* Coordinates along axis d of the ghost nodes of a tank box: layers below min and above max at
+ * (k + 1/2) dx from each face, and the interior lattice anchored at min. Returns the count. */
+static int tank_axis(const struct shape *s, int d, double dx, int layers, double *out) {
+  int n = 0;
+  for (int k = layers - 1; k >= 0; k--) out[n++] = s->min[d] - (k + 0.5) * dx;
+  for (int i = 0; s->min[d] + (i + 0.5) * dx < s->max[d]; i++) out[n++] = s->min[d] + (i + 0.5) * dx;
+  for (int k = 0; k < layers; k++) out[n++] = s->max[d] + (k + 0.5) * dx;
+  return n;
+}
+
+/* Candidate ghost nodes of wall w (positions, dim per node; caller frees). A tank box gets
+ * layers anchored to each of its faces, so every face has ghosts at (k + 1/2) dx whatever the
+ * box size; other walls use the lattice anchored at the shape's lower corner. */
+static double *wall_nodes(const struct case_def *c, int w, double thickness, long *count) {
+  const struct shape *s = &c->walls[w].shape;
+  int dim = c->dimension, layers = (int)lround(thickness / c->dx);
+  if (s->kind == SHAPE_BOX && c->walls[w].fluid_side == FLUID_INSIDE) {
+    long n[3] = {1, 1, 1};
+    double *axis[3] = {NULL, NULL, NULL};
+    for (int d = 0; d < dim; d++) {
+      axis[d] = malloc(((size_t)((s->max[d] - s->min[d]) / c->dx) + 2 * layers + 4) * sizeof(double));
+      n[d] = tank_axis(s, d, c->dx, layers, axis[d]);
+    }
+    double *nodes = malloc((size_t)(n[0] * n[1] * n[2]) * dim * sizeof(double));
+    *count = n[0] * n[1] * n[2];
+    for (long k = 0; k < *count; k++) {
+      long idx[3] = {k % n[0], (k / n[0]) % n[1], k / (n[0] * n[1])};
+      for (int d = 0; d < dim; d++) nodes[k * dim + d] = axis[d][idx[d]];
+    }
+    for (int d = 0; d < dim; d++) free(axis[d]);
+    return nodes;
+  }
+  double lo[3], hi[3], anchor[3];
+  struct lattice l;
+  shape_bbox(s, dim, thickness, lo, hi);
+  shape_anchor(s, dim, anchor);
+  lattice_cover(&l, dim, c->dx, anchor, lo, hi);
+  *count = lattice_size(&l);
+  double *nodes = malloc((size_t)*count * dim * sizeof(double)), x[3];
+  for (long k = 0; k < *count; k++) {
+    lattice_node(&l, k, x);
+    for (int d = 0; d < dim; d++) nodes[k * dim + d] = x[d];
+  }
+  return nodes;
+}
+
 static int fill_walls(const struct case_def *c, double thickness, int rank, int n_ranks,
                       struct parts *p, struct init_counts *n, int64_t *ordinal, char *err,
                       size_t err_len) {
+  int dim = c->dimension;
   for (int w = 0; w < c->n_walls; w++) {
-    const struct shape *s = &c->walls[w].shape;
-    double lo[3], hi[3], anchor[3], x[3];
-    struct lattice l;
-    shape_bbox(s, c->dimension, thickness, lo, hi);
-    shape_anchor(s, c->dimension, anchor);
-    lattice_cover(&l, c->dimension, c->dx, anchor, lo, hi);
-    for (long node = 0, size = lattice_size(&l); node < size; node++) {
-      lattice_node(&l, node, x);
+    long count;
+    double *nodes = wall_nodes(c, w, thickness, &count), x[3] = {0, 0, 0};
+    for (long k = 0; k < count; k++) {
+      for (int d = 0; d < dim; d++) x[d] = nodes[k * dim + d];
       if (!ghost_of(c, w, thickness, x) || fluid_accessible(c, x)) continue;
       if (earlier_wall(c, w, thickness, x) >= 0) continue;
       if (!inside_domain(c, x)) {
-        snprintf(err, err_len, "%s: walls.%d: its %d ghost layers (%g m) extend outside the domain "
-                 "at (%g, %g): enlarge domain by at least %g m around the wall", c->source_file, w,
-                 (int)lround(thickness / c->dx), thickness, x[0], x[1], thickness);
+        snprintf(err, err_len, "%s: walls.%d: its %d ghost layers (%g m thick) reach (%g, %g%s) outside "
+                 "the domain: the domain must extend at least %g m beyond the wall", c->source_file, w,
+                 (int)lround(thickness / c->dx), thickness, x[0], x[1], dim == 3 ? ", ..." : "", thickness);
+        free(nodes);
         return 1;
       }
       if (p && *ordinal % n_ranks == rank) add_ghost(c, w, x, *ordinal, p);
       (*ordinal)++;
       n->n_wall++;
     }
+    free(nodes);
   }
   return 0;
 }

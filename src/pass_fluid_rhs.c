@@ -1,39 +1,49 @@
-/* pass_fluid_rhs.c — right-hand sides of owned fluid particles (paper 000 Eqs. 5, 6, 9, 10 with
- * the delta-u terms off):
- *   drho_i/dt = -rho_i sum_j (u_j - u_i).grad_i W_ij V_j + delta h c0 sum_{j in phase(i)} psi_ij (-F_ij) V_j
- *   psi_ij    = 2 (rho_j - rho_i) - (<grad rho>_i + <grad rho>_j).r_ji
- *   du_i/dt   = [-sum_j (p_j + p_i) grad_i W_ij V_j + K sum_{j in phase(i) or wall} pi_ij grad_i W_ij V_j] / rho_i + g
- *   pi_ij     = u_ji.r_ji / |r_ji|^2,  K = alpha h c0 rho0 + 2(dim+2) mu.
- * grad_i W_ij = F_ij (r_i - r_j) with F = W'(r)/r. */
+/* pass_fluid_rhs.c — right-hand sides of owned fluid particles, paper 000 Eqs. 5-10, 16-20:
+ *   drho_i/dt = -rho_i <div u>_i + delta h c0 D_i
+ *               + sum_j [(phi_ij rho_j - eps_ij rho_i) du_j + (eps_ii + phi_ii) rho_i du_i] . gW_ij
+ *   rho_i du_i/dt = -sum_j (p_j + s_i p_i) gW_ij + K_i sum_{j in phase(i) or wall} pi_ij gW_ij
+ *                   + sum_{j in phase(i)} [rho_i u_i (du_i . gW_ij) + rho_j u_j (du_j . gW_ij)]
+ *                   - chi sum_{j other fluid} (|p_i| + |p_j|) gW_ij
+ *                   + rho_i alpha2 c0 h sum_j (D~_j + D_i) gW_ij   (acoustic damper on liquids, symmetric
+ *                        form; D~_j = D_j in the phase of i, 0 in other phases and walls)
+ *                   + rho_i alpha2 c0 h sum_{j in phase(i)} (D_j - D_i) gW_ij   (difference form)
+ *                   + rho_i (g - omega^2 (r_i - c))
+ * with gW_ij = grad_i W_ij V_j = F_ij (r_i - r_j) V_j, D_i = sum_{j in phase(i)} psi_ij (-F_ij) V_j,
+ * psi_ij = 2(rho_j - rho_i) - (<grad rho>_i + <grad rho>_j).r_ji, pi_ij = u_ji.r_ji/(r^2 + 0.01 h^2),
+ * K_i = alpha h c0 rho0 + 2(dim+2) mu, s_i = -1 (tensile control: p_i < 0 outside the free-surface
+ * region) else +1, D = <div u>. eps/phi: interface.c.
+ * The terms a case does not use are compiled out of its loop (see dispatch()). */
+#include <math.h>
+#include "interface.h"
 #include "passes.h"
 
-/* Per-particle constants of the phase of i. */
-struct phase_coef {
-  double diffusion;   /* delta h c0 [m^2/s] */
-  double viscosity;   /* K [Pa s] */
+/* Per-particle quantities of i that are constant over its neighbours. */
+struct centre {
+  long i;
+  int phase;
+  double p_sign;                        /* +1, or -1 under tensile control */
+  struct interface_weights w[3];        /* eps/phi/kappa per relation */
 };
-
-static struct phase_coef coefficients(const struct engine *e, int ph) {
-  const struct phase *f = &e->c->phases[ph];
-  struct phase_coef k;
-  k.diffusion = e->c->delta * e->h * f->c0;
-  k.viscosity = e->c->alpha * e->h * f->c0 * f->rho0 + 2.0 * (e->p.dim + 2) * f->viscosity;
-  return k;
-}
 
 /* Sums over the neighbours of fluid particle i. */
 struct fluid_sums {
-  double div, diff, grad_p[3], visc[3];
+  double diff, drho_du, grad_p[3], visc[3], mom_du[3], damper[3], sharp[3];
 };
 
-/* Inlined with a literal dim so that the loops over components unroll. */
-static inline __attribute__((always_inline)) void fluid_sums(const struct engine *e, long i,
+/* Loop over the neighbours of i; terms DU (delta-u), DAMP (acoustic damper: 1 symmetric,
+ * 2 difference form), SHARP (sharpness) and the dimension are compile-time constants in each
+ * specialisation. */
+static inline __attribute__((always_inline)) void fluid_sums(const struct engine *e,
+                                                             const struct centre *ci,
                                                              const struct neighbour_ranges *r,
                                                              struct fluid_sums *s, long *pairs,
-                                                             const int dim) {
+                                                             const int dim, const int DU,
+                                                             const int DAMP, const int SHARP) {
   const struct parts *p = &e->p;
-  const int ph = p->phase[i];
-  const double *vol = e->w.vol;
+  const struct work *w = &e->w;
+  const long i = ci->i;
+  const int ph = ci->phase;
+  const double pi = p->p[i], rhoi = p->rho[i], eta2 = 0.01 * e->h * e->h;
   *s = (struct fluid_sums){0};
   for (int k = 0; k < r->n; k++)
     for (long j = r->start[k]; j < r->start[k] + r->count[k]; j++) {
@@ -46,23 +56,87 @@ static inline __attribute__((always_inline)) void fluid_sums(const struct engine
       }
       if (r2 >= e->kern.support2 || j == i) continue;
       (*pairs)++;
-      double fv = kernel_f(&e->kern, r2) * vol[j];
-      double psum = p->p[j] + p->p[i];
-      s->div += fv * dvdx;
+      const double fv = kernel_f(&e->kern, r2) * w->vol[j];
+      const int rel = p->phase[j] == ph ? PAIR_SAME : (p->phase[j] == PHASE_WALL ? PAIR_WALL : PAIR_OTHER);
+      double psum = p->p[j] + ci->p_sign * pi;
       for (int d = 0; d < dim; d++) s->grad_p[d] += psum * fv * dx[d];
-      int same = p->phase[j] == ph;
-      if (!same && p->phase[j] != PHASE_WALL) continue;
-      double pi_ij = -dvdx / r2;   /* u_ji . r_ji / r^2 with r_ji = -dx */
+      if (DU) {
+        const struct interface_weights *iw = &ci->w[rel];
+        double cii, cj, dui_g = 0, duj_g = 0;
+        interface_continuity_coefficients(iw, rhoi, p->rho[j], &cii, &cj);
+        for (int d = 0; d < dim; d++) {
+          dui_g += w->du[d][i] * dx[d] * fv;
+          duj_g += w->du[d][j] * dx[d] * fv;
+        }
+        s->drho_du += cj * duj_g + cii * dui_g;
+        if (rel == PAIR_SAME)
+          for (int d = 0; d < dim; d++) s->mom_du[d] += rhoi * p->v[d][i] * dui_g + p->rho[j] * p->v[d][j] * duj_g;
+      }
+      if (DAMP == 1) {   /* symmetric form, D extended by zero outside the phase of i */
+        double dsum = (rel == PAIR_SAME ? w->div[j] : 0.0) + w->div[i];
+        for (int d = 0; d < dim; d++) s->damper[d] += dsum * fv * dx[d];
+      }
+      if (SHARP && rel == PAIR_OTHER)
+        for (int d = 0; d < dim; d++) s->sharp[d] -= (fabs(pi) + fabs(p->p[j])) * fv * dx[d];
+      if (rel == PAIR_OTHER) continue;
+      const double pi_ij = -dvdx / (r2 + eta2);   /* u_ji . r_ji / (r^2 + 0.01 h^2), r_ji = -dx */
       for (int d = 0; d < dim; d++) s->visc[d] += pi_ij * fv * dx[d];
-      if (!same) continue;
+      if (rel == PAIR_WALL) continue;
+      if (DAMP == 2)
+        for (int d = 0; d < dim; d++) s->damper[d] += (w->div[j] - w->div[i]) * fv * dx[d];
       double gsum = 0;
-      for (int d = 0; d < dim; d++) gsum -= (e->w.grad_rho[d][i] + e->w.grad_rho[d][j]) * dx[d];
-      s->diff -= (2.0 * (p->rho[j] - p->rho[i]) - gsum) * fv;
+      for (int d = 0; d < dim; d++) gsum -= (w->grad_rho[d][i] + w->grad_rho[d][j]) * dx[d];
+      s->diff -= (2.0 * (p->rho[j] - rhoi) - gsum) * fv;
     }
 }
 
+#define FLUID_SUMS(D, U, A, S) fluid_sums(e, ci, r, s, pairs, D, U, A, S)
+#define DAMPED(D, U, S) (damp == 0 ? FLUID_SUMS(D, U, 0, S) : damp == 1 ? FLUID_SUMS(D, U, 1, S) : FLUID_SUMS(D, U, 2, S))
+#define SHARPENED(D, U) (sharp ? DAMPED(D, U, 1) : DAMPED(D, U, 0))
+
+/* Call the specialisation of fluid_sums for the case's terms. */
+static void dispatch(const struct engine *e, const struct centre *ci, const struct neighbour_ranges *r,
+                     struct fluid_sums *s, long *pairs) {
+  unsigned f = e->features;
+  int du = (f & FEAT_DELTA_U) != 0, sharp = (f & FEAT_SHARPNESS) != 0;
+  int damp = !(f & FEAT_DAMPER) ? 0 : e->c->damper_form == DAMPER_SYMMETRIC ? 1 : 2;
+  if (!e->c->phases[ci->phase].incompressible) damp = 0;
+  if (e->p.dim == 2) du ? SHARPENED(2, 1) : SHARPENED(2, 0);
+  else du ? SHARPENED(3, 1) : SHARPENED(3, 0);
+}
+
+/* Body force per unit mass at particle i: gravity and the quadratic potential. */
+static void body_force(const struct engine *e, long i, double *f) {
+  const struct case_def *c = e->c;
+  double w2 = c->potential_omega * c->potential_omega;
+  for (int d = 0; d < e->p.dim; d++) f[d] = c->gravity[d] - w2 * (e->p.x[d][i] - c->potential_centre[d]);
+}
+
+/* Combine the sums into drho/dt and du/dt of particle i. */
+static void finish(struct engine *e, const struct centre *ci, const struct fluid_sums *s) {
+  const struct parts *p = &e->p;
+  const struct phase *f = &e->c->phases[ci->phase];
+  const long i = ci->i;
+  double k_visc = e->c->alpha * e->h * f->c0 * f->rho0 + 2.0 * (p->dim + 2) * f->viscosity;
+  double k_damp = e->damper_coef[1 + ci->phase], g[3];
+  body_force(e, i, g);
+  e->w.drho[i] = -p->rho[i] * e->w.div[i] + e->c->delta * e->h * f->c0 * s->diff + s->drho_du;
+  for (int d = 0; d < p->dim; d++)
+    e->w.dv[d][i] = (-s->grad_p[d] + k_visc * s->visc[d] + s->mom_du[d] + e->c->interface_sharpness * s->sharp[d]) /
+                        p->rho[i] + k_damp * s->damper[d] + g[d];
+}
+
+/* Interface weights, tensile-control sign of particle i. */
+static void centre_of(const struct engine *e, long i, struct centre *ci) {
+  ci->i = i;
+  ci->phase = e->p.phase[i];
+  int in_region = e->w.region && e->w.region[i] > 0;
+  ci->p_sign = (e->features & FEAT_TIC) && e->p.p[i] < 0 && !in_region ? -1.0 : 1.0;
+  interface_table(e->c->interface_mode, ci->w);
+}
+
 void pass_fluid_rhs(struct engine *e) {
-  struct parts *p = &e->p;
+  const struct parts *p = &e->p;
   const struct space *s = &e->space;
   long pairs = 0;
   for (long k = 0; k < s->n_owned_cells; k++) {
@@ -72,13 +146,11 @@ void pass_fluid_rhs(struct engine *e) {
     neighbour_ranges(s, c, &r);
     for (long i = s->cell_start[c]; i < s->cell_start[c] + s->cell_count[c]; i++) {
       if (p->phase[i] == PHASE_WALL) continue;
+      struct centre ci;
       struct fluid_sums sum;
-      struct phase_coef coef = coefficients(e, p->phase[i]);
-      if (p->dim == 2) fluid_sums(e, i, &r, &sum, &pairs, 2);
-      else fluid_sums(e, i, &r, &sum, &pairs, 3);
-      e->w.drho[i] = -p->rho[i] * sum.div + coef.diffusion * sum.diff;
-      for (int d = 0; d < p->dim; d++)
-        e->w.dv[d][i] = (-sum.grad_p[d] + coef.viscosity * sum.visc[d]) / p->rho[i] + e->c->gravity[d];
+      centre_of(e, i, &ci);
+      dispatch(e, &ci, &r, &sum, &pairs);
+      finish(e, &ci, &sum);
     }
   }
   e->pass_pairs += pairs;

@@ -35,10 +35,9 @@ expect 1 "fluids.1 overlaps fluids.0" -- build/mpsph check "$tmp/overlap.yaml"
 expect 1 "walls.0.*ghost layers.*outside the domain" -- build/mpsph check "$case" --set domain.min=[-0.05,-0.05]
 expect 1 "1 cells but 3 ranks|cells but 3 ranks" -- scripts/mpirun -n 3 build/mpsph run "$case" -o "$tmp/ranks" \
   --set "walls=[]" --set resolution.dx=0.2 --set time.end=0.01
-expect 1 "phases: 2 phases" -- build/mpsph run "$case" -o "$tmp/twophase" \
-  --set 'phases.1={name: air, rho0: 1, c0: 340, gamma: 1.4}'
+expect 1 "scheme: only delta-plus" -- build/mpsph run "$case" -o "$tmp/scheme" --set scheme=riemann
 expect 1 "cannot write to the output folder" -- build/mpsph run "$case" -o /proc/mpsph-not-writable
-for d in ranks twophase; do
+for d in ranks scheme; do
   if [ -e "$tmp/$d" ] && [ -n "$(ls -A "$tmp/$d")" ]; then echo "FAIL: bad input wrote $tmp/$d"; fail=1; fi
 done
 exit $fail

@@ -1,0 +1,140 @@
+/* pass_free_surface.c — free-surface detection of Marrone, Colagrossi, Le Touzé & Graziani 2010
+ * (JCP 229:3652), the method cited by paper 000:
+ *  1. lambda_i = smallest eigenvalue of B_i = sum_j r_ji (x) grad_i W_ij V_j over all neighbours
+ *     (every phase and the wall ghosts, so that walls and interfaces are not free surfaces);
+ *     lambda <= 0.2: free surface; lambda > 0.75: interior; otherwise a candidate;
+ *  2. normal n_i = nu/|nu|, nu = -B_i^-1 sum_j grad_i W_ij V_j; a candidate is a free-surface
+ *     particle unless a neighbour lies in the umbrella-shaped region around T = r_i + h n_i:
+ *     |r_ji| >= sqrt(2) h and |r_j - T| < h, or |r_ji| < sqrt(2) h and
+ *     |n.(r_j - T)| + |(r_j - T) - n (n.(r_j - T))| < h.
+ * The free-surface region is the detected particles plus those within surface_band h of one. */
+#include <math.h>
+#include "linalg.h"
+#include "passes.h"
+
+#define LAMBDA_SURFACE 0.2
+#define LAMBDA_INTERIOR 0.75
+#define SINGULAR_DET 1e-3   /* det(B) below which the normal is -sum grad W itself */
+
+/* B matrix and sum of kernel gradients of particle i over all neighbours. */
+static void moments(const struct engine *e, long i, const struct neighbour_ranges *r, double *mt,
+                    double *sum_gw, long *pairs) {
+  const struct parts *p = &e->p;
+  const int dim = p->dim;
+  for (int k = 0; k < 9; k++) mt[k] = 0;
+  for (int d = 0; d < 3; d++) sum_gw[d] = 0;
+  for (int k = 0; k < r->n; k++)
+    for (long j = r->start[k]; j < r->start[k] + r->count[k]; j++) {
+      double dx[3], r2 = 0;
+      for (int d = 0; d < dim; d++) {
+        dx[d] = p->x[d][i] - p->x[d][j];
+        r2 += dx[d] * dx[d];
+      }
+      if (r2 >= e->kern.support2 || j == i) continue;
+      double fv = kernel_f(&e->kern, r2) * e->w.vol[j];
+      for (int a = 0; a < dim; a++) {
+        sum_gw[a] += fv * dx[a];
+        for (int b = 0; b < dim; b++) mt[a * dim + b] -= fv * dx[a] * dx[b];
+      }
+      (*pairs)++;
+    }
+}
+
+/* Outward unit normal -B^-1 sum grad W (or -sum grad W where B is singular); 0 if undefined. */
+static void outward_normal(int dim, const double *mt, const double *sum_gw, double *n) {
+  double nu[3] = {0, 0, 0}, len = 0;
+  double det = linalg_solve(dim, mt, sum_gw, nu);
+  for (int d = 0; d < dim; d++) nu[d] = fabs(det) > SINGULAR_DET ? -nu[d] : -sum_gw[d];
+  for (int d = 0; d < dim; d++) len += nu[d] * nu[d];
+  len = sqrt(len);
+  for (int d = 0; d < dim; d++) n[d] = len > 0 ? nu[d] / len : 0;
+}
+
+/* 1 if some neighbour lies in the umbrella region above candidate i (so i is not on the surface). */
+static int umbrella_covered(const struct engine *e, long i, const struct neighbour_ranges *r,
+                            const double *n) {
+  const struct parts *p = &e->p;
+  const int dim = p->dim;
+  const double h = e->h;
+  double t[3];
+  for (int d = 0; d < dim; d++) t[d] = p->x[d][i] + h * n[d];
+  for (int k = 0; k < r->n; k++)
+    for (long j = r->start[k]; j < r->start[k] + r->count[k]; j++) {
+      double rij2 = 0, rt[3], rt2 = 0, rn = 0;
+      for (int d = 0; d < dim; d++) {
+        double dij = p->x[d][j] - p->x[d][i];
+        rij2 += dij * dij;
+        rt[d] = p->x[d][j] - t[d];
+        rt2 += rt[d] * rt[d];
+        rn += rt[d] * n[d];
+      }
+      if (j == i || rij2 >= e->kern.support2) continue;
+      if (rij2 >= 2 * h * h) {
+        if (rt2 < h * h) return 1;
+      } else if (fabs(rn) + sqrt(fmax(rt2 - rn * rn, 0.0)) < h) {
+        return 1;
+      }
+    }
+  return 0;
+}
+
+/* Classify owned fluid particle i. */
+static void detect(struct engine *e, long i, const struct neighbour_ranges *r, long *pairs) {
+  const int dim = e->p.dim;
+  double mt[9], sum_gw[3], n[3];
+  moments(e, i, r, mt, sum_gw, pairs);
+  double lambda = linalg_min_eigenvalue(dim, mt);
+  outward_normal(dim, mt, sum_gw, n);
+  int surface = lambda <= LAMBDA_SURFACE;
+  if (!surface && lambda <= LAMBDA_INTERIOR) surface = !umbrella_covered(e, i, r, n);
+  e->w.surface[i] = surface;
+  e->w.lambda[i] = lambda;
+  for (int d = 0; d < dim; d++) e->w.normal[d][i] = n[d];
+  e->n_surface += surface;
+}
+
+void pass_free_surface(struct engine *e) {
+  const struct parts *p = &e->p;
+  const struct space *s = &e->space;
+  long pairs = 0;
+  engine_update_volumes(e);
+  e->n_surface = 0;
+  for (long k = 0; k < s->n_owned_cells; k++) {
+    long c = s->owned_cells[k];
+    if (!s->cell_count[c]) continue;
+    struct neighbour_ranges r;
+    neighbour_ranges(s, c, &r);
+    for (long i = s->cell_start[c]; i < s->cell_start[c] + s->cell_count[c]; i++) {
+      if (p->phase[i] == PHASE_WALL) {
+        e->w.surface[i] = 0;
+        e->w.lambda[i] = 1;
+        continue;
+      }
+      detect(e, i, &r, &pairs);
+    }
+  }
+  e->pass_pairs += pairs;
+}
+
+void pass_surface_band(struct engine *e) {
+  const struct parts *p = &e->p;
+  const struct space *s = &e->space;
+  double band = fmin(e->c->surface_band * e->h, e->kern.support), band2 = band * band;
+  for (long k = 0; k < s->n_owned_cells; k++) {
+    long c = s->owned_cells[k];
+    if (!s->cell_count[c]) continue;
+    struct neighbour_ranges r;
+    neighbour_ranges(s, c, &r);
+    for (long i = s->cell_start[c]; i < s->cell_start[c] + s->cell_count[c]; i++) {
+      int in = e->w.surface[i] > 0;
+      for (int q = 0; q < r.n && !in && p->phase[i] != PHASE_WALL; q++)
+        for (long j = r.start[q]; j < r.start[q] + r.count[q] && !in; j++) {
+          if (e->w.surface[j] <= 0) continue;
+          double r2 = 0;
+          for (int d = 0; d < p->dim; d++) r2 += (p->x[d][i] - p->x[d][j]) * (p->x[d][i] - p->x[d][j]);
+          in = r2 < band2;
+        }
+      e->w.region[i] = in;
+    }
+  }
+}

@@ -1,0 +1,87 @@
+/* pass_gradients.c — the first pair pass of every stage:
+ *  - renormalised density gradient (paper 000 Eq. 7, Randles & Libersky), same phase only:
+ *    <grad rho>_i = L_i sum_j (rho_j - rho_i) grad_i W_ij V_j, L_i = [sum_j r_ji (x) grad_i W_ij V_j]^-1;
+ *    a near-singular matrix falls back to L = I;
+ *  - velocity divergence over all neighbours: <div u>_i = sum_j u_ji . grad_i W_ij V_j;
+ *  - with shifting, sum_j grad_i W_ij V_j over all neighbours, turned into du (shifting.c). */
+#include <math.h>
+#include "linalg.h"
+#include "passes.h"
+
+#define RENORM_MIN_DET 0.1   /* det of the matrix below which L falls back to the identity */
+
+/* Sums of particle i; inlined with literal dim and shift so the loops specialise. Returns 1 if
+ * the renormalisation fell back to the identity. */
+static inline __attribute__((always_inline)) int gradients_of(struct engine *e, long i,
+                                                              const struct neighbour_ranges *r,
+                                                              long *pairs, const int dim,
+                                                              const int shift) {
+  struct parts *p = &e->p;
+  const int ph = p->phase[i];
+  const double *vol = e->w.vol;
+  double mt[9] = {0}, g[3] = {0}, sum_gw[3] = {0}, div = 0, out[3];
+  int n_nb = 0;
+  for (int k = 0; k < r->n; k++)
+    for (long j = r->start[k]; j < r->start[k] + r->count[k]; j++) {
+      double dx[3], r2 = 0, dvdx = 0;
+      for (int d = 0; d < dim; d++) {
+        dx[d] = p->x[d][i] - p->x[d][j];
+        r2 += dx[d] * dx[d];
+        dvdx += (p->v[d][j] - p->v[d][i]) * dx[d];
+      }
+      if (r2 >= e->kern.support2 || j == i) continue;
+      double fv = kernel_f(&e->kern, r2) * vol[j];
+      div += fv * dvdx;
+      n_nb++;
+      if (shift)
+        for (int d = 0; d < dim; d++) sum_gw[d] += fv * dx[d];
+      if (p->phase[j] != ph) continue;
+      double drho = p->rho[j] - p->rho[i];
+      for (int a = 0; a < dim; a++) {
+        g[a] += drho * fv * dx[a];
+        for (int b = 0; b < dim; b++) mt[a * dim + b] -= fv * dx[a] * dx[b];  /* (M)_ab = B_ba */
+      }
+    }
+  *pairs += n_nb;
+  double det = linalg_solve(dim, mt, g, out);
+  int fallback = !(fabs(det) >= RENORM_MIN_DET);
+  for (int d = 0; d < dim; d++) e->w.grad_rho[d][i] = fallback ? g[d] : out[d];
+  e->w.div[i] = div;
+  if (shift) shifting_velocity(e, i, sum_gw, n_nb);
+  return fallback;
+}
+
+void engine_update_volumes(struct engine *e) {
+  const struct parts *p = &e->p;
+  for (long i = 0, n = p->n_owned + p->n_halo; i < n; i++) e->w.vol[i] = p->m[i] / p->rho[i];
+}
+
+/* Zero the gradient-pass results of a wall ghost. */
+static void clear_ghost(struct engine *e, long i) {
+  for (int d = 0; d < e->p.dim; d++) {
+    e->w.grad_rho[d][i] = 0;
+    if (e->w.du[d]) e->w.du[d][i] = 0;
+  }
+  e->w.div[i] = 0;
+}
+
+void pass_gradients(struct engine *e) {
+  struct parts *p = &e->p;
+  const struct space *s = &e->space;
+  const int shift = (e->features & FEAT_SHIFT) != 0;
+  long pairs = 0, fallbacks = 0;
+  engine_update_volumes(e);
+  for (long k = 0; k < s->n_owned_cells; k++) {
+    long c = s->owned_cells[k];
+    if (!s->cell_count[c]) continue;
+    struct neighbour_ranges r;
+    neighbour_ranges(s, c, &r);
+    for (long i = s->cell_start[c]; i < s->cell_start[c] + s->cell_count[c]; i++) {
+      if (p->phase[i] == PHASE_WALL) clear_ghost(e, i);
+      else if (p->dim == 2) fallbacks += shift ? gradients_of(e, i, &r, &pairs, 2, 1) : gradients_of(e, i, &r, &pairs, 2, 0);
+      else fallbacks += shift ? gradients_of(e, i, &r, &pairs, 3, 1) : gradients_of(e, i, &r, &pairs, 3, 0);
+    }
+  }
+  e->pass_pairs += pairs;
+  e->renorm_fallbacks += fallbacks;
+}
