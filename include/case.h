@@ -23,12 +23,12 @@ enum free_surface_mode { FREE_SURFACE_AUTO = 0, FREE_SURFACE_ON, FREE_SURFACE_OF
 enum damper_form { DAMPER_DIFFERENCE = 0, DAMPER_SYMMETRIC };
 enum init_pressure { INIT_PRESSURE_HYDROSTATIC = 0, INIT_PRESSURE_ZERO };
 
-/** A geometric shape: box {min,max}, circle {centre,radius} (disc in 2D, ball in 3D) or
- *  polygon (2D only, vertices in order). Lengths in m. */
+/** A geometric shape: box {min,max}, circle {centre,radius[,inner_radius]} (disc in 2D, ball in
+ *  3D; an annulus or shell with inner_radius > 0) or polygon (2D only, vertices in order). [m] */
 struct shape {
   enum shape_kind kind;
   double min[3], max[3];                 /* box */
-  double centre[3], radius;              /* circle */
+  double centre[3], radius, inner_radius;   /* circle (inner_radius 0: full disc) */
   int n_vertices;                        /* polygon */
   double vertex[CASE_MAX_VERTICES][2];
 };

@@ -39,7 +39,7 @@ static const char *const TIME_KEYS[] = {"end", "cfl", "max_steps", NULL};
 static const char *const OUTPUT_KEYS[] = {"interval", "stats_interval", "probes_interval",
                                           "progress_interval", NULL};
 static const char *const BOX_KEYS[] = {"min", "max", NULL};
-static const char *const CIRCLE_KEYS[] = {"centre", "radius", NULL};
+static const char *const CIRCLE_KEYS[] = {"centre", "radius", "inner_radius", NULL};
 static const char *const PHASE_KEYS[] = {"name", "rho0", "c0", "gamma", "p_background",
                                          "viscosity", "incompressible", NULL};
 static const char *const FLUID_KEYS[] = {"phase", "box", "circle", "polygon", "velocity",
@@ -383,8 +383,14 @@ static int shape(const struct map *m, struct shape *s) {
   case SHAPE_BOX:
     return sub(m, "box", BOX_KEYS, &sm) || corners(&sm, s->min, s->max);
   case SHAPE_CIRCLE:
-    return sub(m, "circle", CIRCLE_KEYS, &sm) || vec(&sm, "centre", 1, s->centre) ||
-           num(&sm, "radius", &R_POSITIVE, REQUIRED, &s->radius);
+    if (sub(m, "circle", CIRCLE_KEYS, &sm) || vec(&sm, "centre", 1, s->centre) ||
+        num(&sm, "radius", &R_POSITIVE, REQUIRED, &s->radius) ||
+        num(&sm, "inner_radius", &R_NONNEGATIVE, 0, &s->inner_radius))
+      return 1;
+    if (s->inner_radius < s->radius) return 0;
+    char path[PATH_LEN];
+    return fail(m->ld, ytree_get(sm.node, "inner_radius"), strcat(strcpy(path, sm.path), ".inner_radius"),
+                "got %g, expected a number below radius (%g)", s->inner_radius, s->radius);
   default:
     return polygon(m, s);
   }
@@ -708,10 +714,12 @@ static void put_shape(FILE *f, const char *indent, const char *inner, const stru
   fputc('\n', f);
   put_vec(f, inner, s->kind == SHAPE_BOX ? "min" : "centre", s->kind == SHAPE_BOX ? s->min :
           s->centre, dim);
-  if (s->kind == SHAPE_BOX)
+  if (s->kind == SHAPE_BOX) {
     put_vec(f, inner, "max", s->max, dim);
-  else
+  } else {
     put_num(f, inner, "radius", s->radius);
+    put_num(f, inner, "inner_radius", s->inner_radius);
+  }
 }
 
 static void put_list_key(FILE *f, const char *key, int n) {

@@ -44,8 +44,8 @@ static void stats_header(const struct engine *e) {
   const struct case_def *c = e->c;
   fprintf(e->stats, "step,time,dt");
   for (int ph = 0; ph < c->n_phases; ph++)
-    fprintf(e->stats, ",kinetic_energy_%s,mass_%s,max_density_deviation_%s", c->phases[ph].name,
-            c->phases[ph].name, c->phases[ph].name);
+    fprintf(e->stats, ",kinetic_energy_%s,mass_%s,volume_%s,max_density_deviation_%s", c->phases[ph].name,
+            c->phases[ph].name, c->phases[ph].name, c->phases[ph].name);
   const char *axis = "xyz";
   for (int d = 0; d < c->dimension; d++) fprintf(e->stats, ",momentum_%c", axis[d]);
   fprintf(e->stats, ",wall_seconds\n");
@@ -110,30 +110,33 @@ static int write_snapshot(struct engine *e) {
   return status;
 }
 
-/* One stats.csv row: per-phase kinetic energy, mass and max |rho/rho0 - 1|, momentum. */
+/* One stats.csv row: per-phase kinetic energy, mass, volume sum m/rho and max |rho/rho0 - 1|,
+ * momentum. */
 static void write_stats(struct engine *e) {
   const struct case_def *c = e->c;
   const struct parts *p = &e->p;
   int np = c->n_phases, dim = p->dim;
-  double sum[2 * CASE_MAX_PHASES + 3] = {0}, dev[CASE_MAX_PHASES] = {0};
+  double sum[3 * CASE_MAX_PHASES + 3] = {0}, dev[CASE_MAX_PHASES] = {0};
   for (long i = 0; i < p->n_owned; i++) {
     int ph = p->phase[i];
     if (ph == PHASE_WALL) continue;
     double v2 = 0;
     for (int d = 0; d < dim; d++) {
       v2 += p->v[d][i] * p->v[d][i];
-      sum[2 * np + d] += p->m[i] * p->v[d][i];
+      sum[3 * np + d] += p->m[i] * p->v[d][i];
     }
-    sum[2 * ph] += 0.5 * p->m[i] * v2;
-    sum[2 * ph + 1] += p->m[i];
+    sum[3 * ph] += 0.5 * p->m[i] * v2;
+    sum[3 * ph + 1] += p->m[i];
+    sum[3 * ph + 2] += p->m[i] / p->rho[i];
     dev[ph] = fmax(dev[ph], fabs(p->rho[i] / c->phases[ph].rho0 - 1.0));
   }
-  MPI_Reduce(e->rank ? sum : MPI_IN_PLACE, sum, 2 * np + dim, MPI_DOUBLE, MPI_SUM, 0, e->comm);
+  MPI_Reduce(e->rank ? sum : MPI_IN_PLACE, sum, 3 * np + dim, MPI_DOUBLE, MPI_SUM, 0, e->comm);
   MPI_Reduce(e->rank ? dev : MPI_IN_PLACE, dev, np, MPI_DOUBLE, MPI_MAX, 0, e->comm);
   if (e->rank) return;
   fprintf(e->stats, "%ld,%.10g,%.6g", e->step, e->time, e->dt);
-  for (int ph = 0; ph < np; ph++) fprintf(e->stats, ",%.10g,%.15g,%.6g", sum[2 * ph], sum[2 * ph + 1], dev[ph]);
-  for (int d = 0; d < dim; d++) fprintf(e->stats, ",%.10g", sum[2 * np + d]);
+  for (int ph = 0; ph < np; ph++)
+    fprintf(e->stats, ",%.10g,%.15g,%.12g,%.6g", sum[3 * ph], sum[3 * ph + 1], sum[3 * ph + 2], dev[ph]);
+  for (int d = 0; d < dim; d++) fprintf(e->stats, ",%.10g", sum[3 * np + d]);
   fprintf(e->stats, ",%.3f\n", MPI_Wtime() - e->wall_start);
   fflush(e->stats);
 }

@@ -13,7 +13,7 @@ static int box_contains(const struct shape *s, int dim, const double *x) {
 static int circle_contains(const struct shape *s, int dim, const double *x) {
   double r2 = 0;
   for (int d = 0; d < dim; d++) r2 += (x[d] - s->centre[d]) * (x[d] - s->centre[d]);
-  return r2 <= s->radius * s->radius;
+  return r2 <= s->radius * s->radius && r2 >= s->inner_radius * s->inner_radius;
 }
 
 /* Crossing-number test; points on an edge may go either way. */
@@ -62,9 +62,11 @@ static double circle_nearest(const struct shape *s, int dim, const double *x, do
   double r2 = 0;
   for (int d = 0; d < dim; d++) r2 += (x[d] - s->centre[d]) * (x[d] - s->centre[d]);
   double r = sqrt(r2);
+  int inner = s->inner_radius > 0 && fabs(r - s->inner_radius) < fabs(r - s->radius);
+  double radius = inner ? s->inner_radius : s->radius;
   for (int d = 0; d < dim; d++)
-    q[d] = s->centre[d] + (r > 0 ? (x[d] - s->centre[d]) / r : (d == 0)) * s->radius;
-  return fabs(r - s->radius);
+    q[d] = s->centre[d] + (r > 0 ? (x[d] - s->centre[d]) / r : (d == 0)) * radius;
+  return fabs(r - radius);
 }
 
 /* Nearest point to x on segment [a, b]; returns the squared distance. */
@@ -109,8 +111,9 @@ static double box_ray(const struct shape *s, int dim, const double *x, const dou
   return t1 > t0 ? t1 - t0 : 0;
 }
 
-static double circle_ray(const struct shape *s, int dim, const double *x, const double *dir) {
-  double b = 0, c = -s->radius * s->radius;
+/* Length of the ray inside the full ball of the given radius. */
+static double ball_ray(const struct shape *s, double radius, int dim, const double *x, const double *dir) {
+  double b = 0, c = -radius * radius;
   for (int d = 0; d < dim; d++) {
     double e = x[d] - s->centre[d];
     b += e * dir[d];
@@ -120,6 +123,12 @@ static double circle_ray(const struct shape *s, int dim, const double *x, const 
   if (disc <= 0) return 0;
   double t0 = fmax(-b - sqrt(disc), 0.0), t1 = -b + sqrt(disc);
   return t1 > t0 ? t1 - t0 : 0;
+}
+
+/* The inner ball lies inside the outer one, so the annulus takes the difference. */
+static double circle_ray(const struct shape *s, int dim, const double *x, const double *dir) {
+  double outer = ball_ray(s, s->radius, dim, x, dir);
+  return s->inner_radius > 0 ? outer - ball_ray(s, s->inner_radius, dim, x, dir) : outer;
 }
 
 static int compare_double(const void *a, const void *b) {
