@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# The single-phase dam break (2D, 300 steps) and a coarse 3D hydrostatic box (40 steps) give
+# The single-phase dam break (2D, 300 steps), a coarse 3D hydrostatic box (40 steps) and the
+# two-phase dam break with every delta-plus term (100 steps) give
 # bitwise-identical particle data (sorted by id) on
 # 1, 2 and 3 ranks, also with forced re-partitions; total mass is conserved
 # exactly (every particle keeps its mass bit for bit and none is lost).
@@ -24,3 +25,12 @@ three=(tests/cases/hydrostatic-3d.yaml --set time.max_steps=40 --set output.inte
 scripts/mpirun -n 1 build/mpsph run "${three[@]}" -o "$out/3d1"
 scripts/mpirun -n 3 build/mpsph run "${three[@]}" -o "$out/3d3" --set parallel.repartition_every=15
 "$PYTHON" tests/compare_snapshots.py "$out/3d1" "$out/3d3"
+# The two-phase dam break with every delta-plus term (shifting with the delta-u terms, damper,
+# tensile control, free-surface detection), 100 steps, 1, 2 and 3 ranks.
+two=(cases/dambreak-2phase/case.yaml --set resolution.dx=0.04 --set time.max_steps=100
+     --set output.interval=0.002 --set output.progress_interval=1000)
+scripts/mpirun -n 1 build/mpsph run "${two[@]}" -o "$out/2p1"
+scripts/mpirun -n 2 build/mpsph run "${two[@]}" -o "$out/2p2"
+scripts/mpirun -n 3 build/mpsph run "${two[@]}" -o "$out/2p3" --set parallel.repartition_every=40
+"$PYTHON" tests/compare_snapshots.py "$out/2p1" "$out/2p2"
+"$PYTHON" tests/compare_snapshots.py "$out/2p1" "$out/2p3"
