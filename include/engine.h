@@ -74,6 +74,8 @@ struct engine {
   double damper_coef[CASE_MAX_PHASES + 1];  /* alpha2 c0 h of phase k at [k + 1]; 0 for gases, walls [m^2/s] */
   double time, dt;                 /* [s] */
   long step;
+  double step_start_time;          /* time and step at the start of the current step */
+  long step_start;
   int n_ops;
   struct stage_op ops[ENGINE_MAX_OPS];
   long pass_pairs;                 /* pair evaluations of the running pass */
@@ -137,8 +139,13 @@ void engine_print_pipeline(const struct engine *e);
 /** Snapshot, stats and probe output when due (force = write all now). Returns 0 or 3. */
 int engine_output(struct engine *e, int force);
 
-/** Open the output files (config.yaml, stats.csv, probes.csv). Returns 0 or 3. */
+/** Open the output files (config.yaml, stats.csv, probes.csv). Returns 0, or 1 (with a message)
+ *  when the output folder cannot be written: a bad -o is bad input. */
 int engine_open_output(struct engine *e);
+
+/** After an instability: write the failing state (unstable_failing.h5) and the state at the start
+ *  of the step (unstable_last_good.h5). Collective. Returns 0 or 3. */
+int engine_write_failure(struct engine *e);
 
 /** Close the output files and write the final XDMF index. */
 void engine_close_output(struct engine *e);

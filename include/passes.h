@@ -14,6 +14,13 @@ struct neighbour_ranges {
 /** The particle ranges of the 3^dim cells around cell c (those present on this rank). */
 void neighbour_ranges(const struct space *s, long c, struct neighbour_ranges *r);
 
+/** Work on owned particle i with the neighbour ranges of its cell. */
+typedef void (*particle_fn)(struct engine *e, long i, const struct neighbour_ranges *r);
+
+/** Call fluid (or wall, for wall ghosts; either may be NULL) for every owned particle, cell by
+ *  cell in global order. */
+void pass_for_each_owned(struct engine *e, particle_fn fluid, particle_fn wall);
+
 /** Volumes m/rho of all slots (owned and halo) for the pair passes of this stage [m^dim]. */
 void engine_update_volumes(struct engine *e);
 

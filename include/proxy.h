@@ -42,7 +42,7 @@ void halo_update(struct halo *h, const struct parts *p, double *const *fields, i
 
 /** Send owned particles whose cell now belongs to another rank to that rank (a neighbour) and
  *  append the particles received. Returns the id of a particle that moved beyond the
- *  neighbouring ranks (then nothing is sent), or -1. */
+ *  neighbouring ranks (then nothing is sent or changed), or -1. */
 int64_t halo_migrate(struct halo *h, const struct space *s, struct parts *p);
 
 /** Values per particle in a full-particle message. */

@@ -84,8 +84,10 @@ void engine_report_particle(const struct engine *e, long i, const char *what) {
   char pos[96];
   if (p->dim == 2) snprintf(pos, sizeof pos, "(%.9g, %.9g)", p->x[0][i], p->x[1][i]);
   else snprintf(pos, sizeof pos, "(%.9g, %.9g, %.9g)", p->x[0][i], p->x[1][i], p->x[2][i]);
-  fprintf(stderr, "mpsph: unstable at step %ld, t = %.9g s, RK stage %d: particle %lld (phase %d) at %s "
-          "with density %.6g kg/m^3, pressure %.6g Pa: %s\n", e->step, e->time, e->stage + 1,
+  char stage[32] = "after the step";
+  if (e->stage >= 0) snprintf(stage, sizeof stage, "RK stage %d", e->stage + 1);
+  fprintf(stderr, "mpsph: unstable at step %ld, t = %.9g s, %s: particle %lld (phase %d) at %s "
+          "with density %.6g kg/m^3, pressure %.6g Pa: %s\n", e->step, e->time, stage,
           (long long)p->id[i], p->phase[i], pos, p->rho[i], p->p[i], what);
 }
 
@@ -243,7 +245,10 @@ int engine_run(struct engine *e) {
     if (!status) status = engine_output(e, 0);
     progress(e);
   }
-  if (status == 2) report(e, "run stopped: the state became unstable");
+  if (status == 2) {
+    report(e, "run stopped: the state became unstable; writing the failing and the last good state");
+    if (engine_write_failure(e)) status = 3;
+  }
   if (status != 2 && status != 3) status = engine_output(e, 1);
   engine_close_output(e);
   engine_report(e, MPI_Wtime() - loop_start);

@@ -6,6 +6,7 @@
 #include <sys/stat.h>
 #include "case_load.h"
 #include "engine.h"
+#include "eos.h"
 #include "io_hdf5.h"
 #include "passes.h"
 
@@ -70,6 +71,7 @@ int engine_open_output(struct engine *e) {
       e->stats = open_csv(e->outdir, "stats.csv");
       if (e->c->n_probes) e->probes = open_csv(e->outdir, "probes.csv");
       status = !e->stats || (e->c->n_probes && !e->probes) ? 1 : 0;
+      if (status) fprintf(stderr, "mpsph: cannot create stats.csv or probes.csv in '%s': %s\n", e->outdir, strerror(errno));
       if (!status) stats_header(e);
       if (!status && e->probes) probes_header(e);
     }
@@ -82,6 +84,40 @@ void engine_close_output(struct engine *e) {
   if (e->stats) fclose(e->stats);
   if (e->probes) fclose(e->probes);
   e->stats = e->probes = NULL;
+}
+
+/* Swap the owned particles' state with the RK start state of the step (x0, v0, rho0), pressure
+ * from the EOS: calling it twice restores the state, except the pressures of the second call. */
+static void swap_step_start(struct engine *e) {
+  struct parts *p = &e->p;
+  for (long i = 0; i < p->n_owned; i++) {
+    double t;
+    for (int d = 0; d < p->dim; d++) {
+      t = p->x[d][i], p->x[d][i] = e->w.x0[d][i], e->w.x0[d][i] = t;
+      t = p->v[d][i], p->v[d][i] = e->w.v0[d][i], e->w.v0[d][i] = t;
+    }
+    t = p->rho[i], p->rho[i] = e->w.rho0[i], e->w.rho0[i] = t;
+    if (p->phase[i] != PHASE_WALL) p->p[i] = eos_pressure(&e->c->phases[p->phase[i]], p->rho[i]);
+  }
+}
+
+/* One snapshot file named `name` in the output folder at the given time and step. */
+static int write_named(struct engine *e, const char *name, double time, long step) {
+  char path[1200], err[512];
+  snprintf(path, sizeof(path), "%s/%s", e->outdir, name);
+  struct snapshot_info info = {time, step, e->c->dimension, e->case_yaml, MPSPH_VERSION};
+  int status = hdf5_write_snapshot(path, &info, &e->p, e->comm, err, sizeof(err));
+  if (status && e->rank == 0) fprintf(stderr, "mpsph: %s\n", err);
+  if (!status && e->rank == 0) printf("wrote %s (t = %.9g s, step %ld)\n", path, time, step);
+  return status ? 3 : 0;
+}
+
+int engine_write_failure(struct engine *e) {
+  int status = write_named(e, "unstable_failing.h5", e->time, e->step);
+  swap_step_start(e);
+  int good = write_named(e, "unstable_last_good.h5", e->step_start_time, e->step_start);
+  swap_step_start(e);
+  return status ? status : good;
 }
 
 static int write_snapshot(struct engine *e) {

@@ -256,6 +256,8 @@ static int check_finite(struct engine *e) {
 int engine_step(struct engine *e) {
   engine_work_reserve(e);
   save_state(e);
+  e->step_start_time = e->time;
+  e->step_start = e->step;
   for (int s = 0; s < 4; s++) {
     e->stage = s;
     engine_evaluate(e, s == 0);
@@ -266,6 +268,7 @@ int engine_step(struct engine *e) {
     }
     rk4_update(e, s);
   }
+  e->stage = -1;   /* between steps */
   e->time += e->dt;
   e->step++;
   return 0;

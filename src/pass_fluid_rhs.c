@@ -135,23 +135,13 @@ static void centre_of(const struct engine *e, long i, struct centre *ci) {
   interface_table(e->c->interface_mode, ci->w);
 }
 
-void pass_fluid_rhs(struct engine *e) {
-  const struct parts *p = &e->p;
-  const struct space *s = &e->space;
-  long pairs = 0;
-  for (long k = 0; k < s->n_owned_cells; k++) {
-    long c = s->owned_cells[k];
-    if (!s->cell_count[c]) continue;
-    struct neighbour_ranges r;
-    neighbour_ranges(s, c, &r);
-    for (long i = s->cell_start[c]; i < s->cell_start[c] + s->cell_count[c]; i++) {
-      if (p->phase[i] == PHASE_WALL) continue;
-      struct centre ci;
-      struct fluid_sums sum;
-      centre_of(e, i, &ci);
-      dispatch(e, &ci, &r, &sum, &pairs);
-      finish(e, &ci, &sum);
-    }
-  }
-  e->pass_pairs += pairs;
+/* Both right-hand sides of fluid particle i. */
+static void fluid_rhs(struct engine *e, long i, const struct neighbour_ranges *r) {
+  struct centre ci;
+  struct fluid_sums sum;
+  centre_of(e, i, &ci);
+  dispatch(e, &ci, r, &sum, &e->pass_pairs);
+  finish(e, &ci, &sum);
 }
+
+void pass_fluid_rhs(struct engine *e) { pass_for_each_owned(e, fluid_rhs, NULL); }

@@ -79,10 +79,10 @@ static int umbrella_covered(const struct engine *e, long i, const struct neighbo
 }
 
 /* Classify owned fluid particle i. */
-static void detect(struct engine *e, long i, const struct neighbour_ranges *r, long *pairs) {
+static void detect(struct engine *e, long i, const struct neighbour_ranges *r) {
   const int dim = e->p.dim;
   double mt[9], sum_gw[3], n[3];
-  moments(e, i, r, mt, sum_gw, pairs);
+  moments(e, i, r, mt, sum_gw, &e->pass_pairs);
   double lambda = linalg_min_eigenvalue(dim, mt);
   outward_normal(dim, mt, sum_gw, n);
   int surface = lambda <= LAMBDA_SURFACE;
@@ -93,48 +93,33 @@ static void detect(struct engine *e, long i, const struct neighbour_ranges *r, l
   e->n_surface += surface;
 }
 
-void pass_free_surface(struct engine *e) {
-  const struct parts *p = &e->p;
-  const struct space *s = &e->space;
-  long pairs = 0;
-  engine_update_volumes(e);
-  e->n_surface = 0;
-  for (long k = 0; k < s->n_owned_cells; k++) {
-    long c = s->owned_cells[k];
-    if (!s->cell_count[c]) continue;
-    struct neighbour_ranges r;
-    neighbour_ranges(s, c, &r);
-    for (long i = s->cell_start[c]; i < s->cell_start[c] + s->cell_count[c]; i++) {
-      if (p->phase[i] == PHASE_WALL) {
-        e->w.surface[i] = 0;
-        e->w.lambda[i] = 1;
-        continue;
-      }
-      detect(e, i, &r, &pairs);
-    }
-  }
-  e->pass_pairs += pairs;
+/* A wall ghost is never on the free surface. */
+static void clear_wall(struct engine *e, long i, const struct neighbour_ranges *r) {
+  (void)r;
+  e->w.surface[i] = 0;
+  e->w.region[i] = 0;
+  e->w.lambda[i] = 1;
 }
 
-void pass_surface_band(struct engine *e) {
-  const struct parts *p = &e->p;
-  const struct space *s = &e->space;
-  double band = fmin(e->c->surface_band * e->h, e->kern.support), band2 = band * band;
-  for (long k = 0; k < s->n_owned_cells; k++) {
-    long c = s->owned_cells[k];
-    if (!s->cell_count[c]) continue;
-    struct neighbour_ranges r;
-    neighbour_ranges(s, c, &r);
-    for (long i = s->cell_start[c]; i < s->cell_start[c] + s->cell_count[c]; i++) {
-      int in = e->w.surface[i] > 0;
-      for (int q = 0; q < r.n && !in && p->phase[i] != PHASE_WALL; q++)
-        for (long j = r.start[q]; j < r.start[q] + r.count[q] && !in; j++) {
-          if (e->w.surface[j] <= 0) continue;
-          double r2 = 0;
-          for (int d = 0; d < p->dim; d++) r2 += (p->x[d][i] - p->x[d][j]) * (p->x[d][i] - p->x[d][j]);
-          in = r2 < band2;
-        }
-      e->w.region[i] = in;
-    }
-  }
+void pass_free_surface(struct engine *e) {
+  engine_update_volumes(e);
+  e->n_surface = 0;
+  pass_for_each_owned(e, detect, clear_wall);
 }
+
+/* 1 if fluid particle i lies within surface_band h of a detected particle (or is one). */
+static void band_of(struct engine *e, long i, const struct neighbour_ranges *r) {
+  const struct parts *p = &e->p;
+  double band = fmin(e->c->surface_band * e->h, e->kern.support), band2 = band * band;
+  int in = e->w.surface[i] > 0;
+  for (int q = 0; q < r->n && !in; q++)
+    for (long j = r->start[q]; j < r->start[q] + r->count[q] && !in; j++) {
+      if (e->w.surface[j] <= 0) continue;
+      double r2 = 0;
+      for (int d = 0; d < p->dim; d++) r2 += (p->x[d][i] - p->x[d][j]) * (p->x[d][i] - p->x[d][j]);
+      in = r2 < band2;
+    }
+  e->w.region[i] = in;
+}
+
+void pass_surface_band(struct engine *e) { pass_for_each_owned(e, band_of, NULL); }

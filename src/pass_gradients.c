@@ -57,7 +57,8 @@ void engine_update_volumes(struct engine *e) {
 }
 
 /* Zero the gradient-pass results of a wall ghost. */
-static void clear_ghost(struct engine *e, long i) {
+static void clear_ghost(struct engine *e, long i, const struct neighbour_ranges *r) {
+  (void)r;
   for (int d = 0; d < e->p.dim; d++) {
     e->w.grad_rho[d][i] = 0;
     if (e->w.du[d]) e->w.du[d][i] = 0;
@@ -65,23 +66,16 @@ static void clear_ghost(struct engine *e, long i) {
   e->w.div[i] = 0;
 }
 
+/* The specialisation of gradients_of for the dimension and shifting. */
+static void gradients(struct engine *e, long i, const struct neighbour_ranges *r) {
+  long *pairs = &e->pass_pairs;
+  int shift = (e->features & FEAT_SHIFT) != 0, fallback;
+  if (e->p.dim == 2) fallback = shift ? gradients_of(e, i, r, pairs, 2, 1) : gradients_of(e, i, r, pairs, 2, 0);
+  else fallback = shift ? gradients_of(e, i, r, pairs, 3, 1) : gradients_of(e, i, r, pairs, 3, 0);
+  e->renorm_fallbacks += fallback;
+}
+
 void pass_gradients(struct engine *e) {
-  struct parts *p = &e->p;
-  const struct space *s = &e->space;
-  const int shift = (e->features & FEAT_SHIFT) != 0;
-  long pairs = 0, fallbacks = 0;
   engine_update_volumes(e);
-  for (long k = 0; k < s->n_owned_cells; k++) {
-    long c = s->owned_cells[k];
-    if (!s->cell_count[c]) continue;
-    struct neighbour_ranges r;
-    neighbour_ranges(s, c, &r);
-    for (long i = s->cell_start[c]; i < s->cell_start[c] + s->cell_count[c]; i++) {
-      if (p->phase[i] == PHASE_WALL) clear_ghost(e, i);
-      else if (p->dim == 2) fallbacks += shift ? gradients_of(e, i, &r, &pairs, 2, 1) : gradients_of(e, i, &r, &pairs, 2, 0);
-      else fallbacks += shift ? gradients_of(e, i, &r, &pairs, 3, 1) : gradients_of(e, i, &r, &pairs, 3, 0);
-    }
-  }
-  e->pass_pairs += pairs;
-  e->renorm_fallbacks += fallbacks;
+  pass_for_each_owned(e, gradients, clear_ghost);
 }

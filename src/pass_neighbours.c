@@ -12,3 +12,17 @@ void neighbour_ranges(const struct space *s, long c, struct neighbour_ranges *r)
     r->count[r->n++] = count;
   }
 }
+
+void pass_for_each_owned(struct engine *e, particle_fn fluid, particle_fn wall) {
+  const struct space *s = &e->space;
+  for (long k = 0; k < s->n_owned_cells; k++) {
+    long c = s->owned_cells[k];
+    if (!s->cell_count[c]) continue;
+    struct neighbour_ranges r;
+    neighbour_ranges(s, c, &r);
+    for (long i = s->cell_start[c]; i < s->cell_start[c] + s->cell_count[c]; i++) {
+      particle_fn fn = e->p.phase[i] == PHASE_WALL ? wall : fluid;
+      if (fn) fn(e, i, &r);
+    }
+  }
+}

@@ -203,9 +203,18 @@ void halo_update(struct halo *h, const struct parts *p, double *const *fields, i
   free(vals);
 }
 
-/* Pack the owned particles leaving for each proxy; compacts the stayers. Returns the id of a
- * particle whose new owner is not a neighbour, or -1. */
-static int64_t pack_strays(struct halo *h, const struct space *s, struct parts *p, long *n_out) {
+/* The id of an owned particle whose new owner is neither this rank nor a neighbour, or -1. */
+static int64_t first_lost(const struct halo *h, const struct space *s, const struct parts *p) {
+  for (long i = 0; i < p->n_owned; i++) {
+    int dest = s->owner[p->cell[i]];
+    if (dest != s->rank && h->proxy_of_rank[dest] < 0) return p->id[i];
+  }
+  return -1;
+}
+
+/* Pack the owned particles leaving for each proxy (all neighbours, see first_lost); compacts the
+ * stayers. */
+static void pack_strays(struct halo *h, const struct space *s, struct parts *p, long *n_out) {
   int w = parts_packed_size(p);
   long kept = 0;
   for (long i = 0; i < p->n_owned; i++) {
@@ -215,15 +224,13 @@ static int64_t pack_strays(struct halo *h, const struct space *s, struct parts *
       kept++;
       continue;
     }
+    struct proxy *px = &h->proxies[h->proxy_of_rank[dest]];
     int k = h->proxy_of_rank[dest];
-    if (k < 0) return p->id[i];
-    struct proxy *px = &h->proxies[k];
     reserve_buf(&px->send_buf, &px->send_cap, (n_out[k] + 1) * w);
     parts_pack(p, i, px->send_buf + n_out[k] * w);
     n_out[k]++;
   }
   p->n_owned = kept;
-  return -1;
 }
 
 int64_t halo_migrate(struct halo *h, const struct space *s, struct parts *p) {
@@ -231,13 +238,13 @@ int64_t halo_migrate(struct halo *h, const struct space *s, struct parts *p) {
   long *counts = calloc(4 * (np + 1), sizeof(long));
   long *n_out = counts, *n_in = counts + np + 1, *vals_out = counts + 2 * (np + 1),
        *vals_in = counts + 3 * (np + 1);
-  int64_t lost = pack_strays(h, s, p, n_out);
-  int64_t lost_any;
+  int64_t lost = first_lost(h, s, p), lost_any;
   MPI_Allreduce(&lost, &lost_any, 1, MPI_INT64_T, MPI_MAX, h->comm);
   if (lost_any >= 0) {
     free(counts);
     return lost_any;
   }
+  pack_strays(h, s, p, n_out);
   exchange_counts(h, n_out, n_in, TAG_MIGRATE_COUNT);
   long total = 0;
   for (int k = 0; k < np; k++) {

@@ -25,10 +25,11 @@ three=(tests/cases/hydrostatic-3d.yaml --set time.max_steps=40 --set output.inte
 scripts/mpirun -n 1 build/mpsph run "${three[@]}" -o "$out/3d1"
 scripts/mpirun -n 3 build/mpsph run "${three[@]}" -o "$out/3d3" --set parallel.repartition_every=15
 "$PYTHON" tests/compare_snapshots.py "$out/3d1" "$out/3d3"
-# The two-phase dam break with every delta-plus term (shifting with the delta-u terms, damper,
-# tensile control, free-surface detection), 100 steps, 1, 2 and 3 ranks.
+# The two-phase dam break with every delta-plus pass forced on (shifting with the delta-u terms,
+# acoustic damper, tensile control, free-surface detection and band), 100 steps, 1, 2 and 3 ranks.
 two=(cases/dambreak-2phase/case.yaml --set resolution.dx=0.04 --set time.max_steps=100
-     --set output.interval=0.002 --set output.progress_interval=1000)
+     --set 'domain.min=[-0.2,-0.2]' --set 'domain.max=[3.416,2.0]' --set physics.acoustic_damper=10
+     --set physics.free_surface=on --set output.interval=0.002 --set output.progress_interval=1000)
 scripts/mpirun -n 1 build/mpsph run "${two[@]}" -o "$out/2p1"
 scripts/mpirun -n 2 build/mpsph run "${two[@]}" -o "$out/2p2"
 scripts/mpirun -n 3 build/mpsph run "${two[@]}" -o "$out/2p3" --set parallel.repartition_every=40
