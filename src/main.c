@@ -87,6 +87,7 @@ int main(int argc, char **argv) {
   if (argc == 2 && (!strcmp(argv[1], "--help") || !strcmp(argv[1], "-h"))) return printf("%s", usage), 0;
   if (argc == 2 && !strcmp(argv[1], "--version")) return printf("mpsph %s\n", MPSPH_VERSION), 0;
   MPI_Init(&argc, &argv);
+  setvbuf(stdout, NULL, _IOLBF, 0);   /* progress shows up in batch logs as it is printed */
   int rank, status;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   struct args a;
