@@ -5,6 +5,7 @@
 #include <mpi.h>
 #include <stdio.h>
 #include "case.h"
+#include "interface.h"
 #include "kernel.h"
 #include "parts.h"
 #include "proxy.h"
@@ -71,6 +72,7 @@ struct engine {
   unsigned features;               /* FEAT_* of the assembled pipeline */
   int stage;                       /* current RK stage 0..3 */
   double rho_min[CASE_MAX_PHASES]; /* global minimum density per phase (first stage) [kg/m^3] */
+  struct interface_weights iface[3];   /* eps/phi/kappa per pair relation (case interface mode) */
   double damper_coef[CASE_MAX_PHASES + 1];  /* alpha2 c0 h of phase k at [k + 1]; 0 for gases, walls [m^2/s] */
   double time, dt;                 /* [s] */
   long step;

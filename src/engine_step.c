@@ -93,6 +93,7 @@ static void damper_coefficients(struct engine *e) {
 void engine_assemble(struct engine *e) {
   unsigned f = e->features = case_features(e);
   damper_coefficients(e);
+  interface_table(e->c->interface_mode, e->iface);
   e->n_ops = 0;
   add_op(e, "halo: positions, velocities, densities, pressures", NULL, HF_POS | HF_VEL | HF_RHO | HF_P, 0);
   if (f & FEAT_WALLS) {

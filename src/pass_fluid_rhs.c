@@ -22,7 +22,6 @@ struct centre {
   long i;
   int phase;
   double p_sign;                        /* +1, or -1 under tensile control */
-  struct interface_weights w[3];        /* eps/phi/kappa per relation */
 };
 
 /* Sums over the neighbours of fluid particle i. */
@@ -61,7 +60,7 @@ static inline __attribute__((always_inline)) void fluid_sums(const struct engine
       double psum = p->p[j] + ci->p_sign * pi;
       for (int d = 0; d < dim; d++) s->grad_p[d] += psum * fv * dx[d];
       if (DU) {
-        const struct interface_weights *iw = &ci->w[rel];
+        const struct interface_weights *iw = &e->iface[rel];
         double cii, cj, dui_g = 0, duj_g = 0;
         interface_continuity_coefficients(iw, rhoi, p->rho[j], &cii, &cj);
         for (int d = 0; d < dim; d++) {
@@ -126,13 +125,12 @@ static void finish(struct engine *e, const struct centre *ci, const struct fluid
                         p->rho[i] + k_damp * s->damper[d] + g[d];
 }
 
-/* Interface weights, tensile-control sign of particle i. */
+/* Phase and tensile-control sign of particle i. */
 static void centre_of(const struct engine *e, long i, struct centre *ci) {
   ci->i = i;
   ci->phase = e->p.phase[i];
   int in_region = e->w.region && e->w.region[i] > 0;
   ci->p_sign = (e->features & FEAT_TIC) && e->p.p[i] < 0 && !in_region ? -1.0 : 1.0;
-  interface_table(e->c->interface_mode, ci->w);
 }
 
 /* Both right-hand sides of fluid particle i. */
