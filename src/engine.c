@@ -21,11 +21,17 @@ static void report(const struct engine *e, const char *msg) {
  * interpolation. */
 static int particle_work(int phase) { return phase == PHASE_WALL ? 2 : 8; }
 
+/* Work units of this rank's owned particles. */
+static double rank_work(const struct engine *e) {
+  double work = 0;
+  for (long i = 0; i < e->p.n_owned; i++) work += particle_work(e->p.phase[i]);
+  return work;
+}
+
 /* This rank's measured seconds per work unit relative to the mean over ranks (1 when no time has
  * been measured yet), so that cell weights follow the measured compute time. */
 static double cost_factor(const struct engine *e) {
-  double work = 0;
-  for (long i = 0; i < e->p.n_owned; i++) work += particle_work(e->p.phase[i]);
+  double work = rank_work(e);
   double rate = work > 0 ? e->t_compute / work : 0, sum;
   MPI_Allreduce(&rate, &sum, 1, MPI_DOUBLE, MPI_SUM, e->comm);
   return sum > 0 && rate > 0 ? rate / (sum / e->n_ranks) : 1.0;
@@ -126,9 +132,7 @@ static int balance(struct engine *e) {
   if (e->n_ranks == 1) return 0;
   if (c->repartition_every > 0 && e->step % c->repartition_every == 0) return engine_repartition(e);
   if (e->step % BALANCE_CHECK_EVERY) return 0;
-  double work = 0;
-  for (long i = 0; i < e->p.n_owned; i++) work += particle_work(e->p.phase[i]);
-  double parts_imb = rank_imbalance(e, work), time_imb = rank_imbalance(e, e->t_compute), t_sum;
+  double parts_imb = rank_imbalance(e, rank_work(e)), time_imb = rank_imbalance(e, e->t_compute), t_sum;
   MPI_Allreduce(&e->t_compute, &t_sum, 1, MPI_DOUBLE, MPI_SUM, e->comm);
   double imb = t_sum > MIN_MEASURED_SECONDS ? time_imb : parts_imb;
   int status = 0;

@@ -13,11 +13,16 @@ static double *grow(double *a, long n) {
 /* Grow an optional array only when its feature is on. */
 static double *grow_if(double *a, long n, int on) { return on ? grow(a, n) : a; }
 
+/* 1 if an optional array of a feature that is on has not been allocated yet. */
+static int optional_missing(const struct engine *e) {
+  return ((e->features & FEAT_SHIFT) && !e->w.du[0]) || ((e->features & FEAT_SURFACE) && !e->w.surface);
+}
+
 void engine_work_reserve(struct engine *e) {
   struct work *w = &e->w;
   long n = e->p.capacity;
   unsigned f = e->features;
-  if (n <= w->capacity) return;
+  if (n <= w->capacity && !optional_missing(e)) return;
   for (int d = 0; d < e->p.dim; d++) {
     w->grad_rho[d] = grow(w->grad_rho[d], n);
     w->dv[d] = grow(w->dv[d], n);

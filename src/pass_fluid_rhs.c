@@ -68,8 +68,9 @@ static inline __attribute__((always_inline)) void fluid_sums(const struct engine
           duj_g += w->du[d][j] * dx[d] * fv;
         }
         s->drho_du += cj * duj_g + cii * dui_g;
-        if (rel == PAIR_SAME)
-          for (int d = 0; d < dim; d++) s->mom_du[d] += rhoi * p->v[d][i] * dui_g + p->rho[j] * p->v[d][j] * duj_g;
+        if (iw->kappa != 0)
+          for (int d = 0; d < dim; d++)
+            s->mom_du[d] += iw->kappa * (rhoi * p->v[d][i] * dui_g + p->rho[j] * p->v[d][j] * duj_g);
       }
       if (DAMP == 1) {   /* symmetric form, D extended by zero outside the phase of i */
         double dsum = (rel == PAIR_SAME ? w->div[j] : 0.0) + w->div[i];

@@ -56,7 +56,7 @@ static void ghost_from_shepard(struct engine *e, long k, const double *xs, const
     n[d] = xs[d] - p->x[d][k];
     nn += n[d] * n[d];
   }
-  for (int d = 0; d < dim; d++) un += u[d] * n[d] / nn;
+  for (int d = 0; d < dim; d++) un += nn > 0 ? u[d] * n[d] / nn : 0.0;
   int no_slip = e->c->walls[p->wall[k]].slip == SLIP_NO;
   for (int d = 0; d < dim; d++) p->v[d][k] = no_slip ? -u[d] : u[d] - 2.0 * un * n[d];
   p->p[k] = pressure;
