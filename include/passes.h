@@ -24,6 +24,17 @@ void pass_for_each_owned(struct engine *e, particle_fn fluid, particle_fn wall);
 /** Volumes m/rho of all slots (owned and halo) for the pair passes of this stage [m^dim]. */
 void engine_update_volumes(struct engine *e);
 
+/** Shepard sums at one point: sum W V, and sum W V times p, rho, u; weights per phase. */
+struct shepard {
+  double w, wp, wrho, wu[3];
+  double w_phase[CASE_MAX_PHASES];
+};
+
+/** Shepard sums at xs over the fluid particles (and the wall ghosts if with_walls) of the cells
+ *  around xs's cell; counts the pairs into *pairs. */
+void shepard_at(const struct engine *e, const double *xs, int with_walls, struct shepard *s,
+                long *pairs);
+
 /** Wall ghosts: Shepard interpolation of p, u at the mirror point, hydrostatic pressure
  *  correction and free-/no-slip velocity (Marrone et al. 2011). Owned ghosts only. */
 void pass_wall_ghosts(struct engine *e);

@@ -181,21 +181,13 @@ static void write_stats(struct engine *e) {
  * extrapolated across the wall, so a probe on a wall reads the wall pressure); contributes only
  * on the rank owning x's cell. */
 static void probe_pressure(const struct engine *e, const double *x, double *num, double *den) {
-  const struct parts *p = &e->p;
-  long c = grid_cell_clamped(&e->space.grid, x);
+  struct shepard s;
+  long pairs = 0;
   *num = *den = 0;
-  if (e->space.owner[c] != e->rank) return;
-  struct neighbour_ranges r;
-  neighbour_ranges(&e->space, c, &r);
-  for (int k = 0; k < r.n; k++)
-    for (long j = r.start[k]; j < r.start[k] + r.count[k]; j++) {
-      double r2 = 0;
-      for (int d = 0; d < p->dim; d++) r2 += (x[d] - p->x[d][j]) * (x[d] - p->x[d][j]);
-      if (r2 >= e->kern.support2) continue;
-      double wv = kernel_w(&e->kern, r2) * p->m[j] / p->rho[j];
-      *num += wv * p->p[j];
-      *den += wv;
-    }
+  if (e->space.owner[grid_cell_clamped(&e->space.grid, x)] != e->rank) return;
+  shepard_at(e, x, 1, &s, &pairs);
+  *num = s.wp;
+  *den = s.w;
 }
 
 static void write_probes(struct engine *e) {

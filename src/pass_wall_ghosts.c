@@ -4,13 +4,8 @@
 #include <string.h>
 #include "passes.h"
 
-/* Shepard sums at one point: sum W V, sum W V p, sum W V rho, sum W V u, per-phase weights. */
-struct shepard {
-  double w, wp, wrho, wu[3];
-  double w_phase[CASE_MAX_PHASES];
-};
-
-static void shepard_at(const struct engine *e, const double *xs, struct shepard *s, long *pairs) {
+void shepard_at(const struct engine *e, const double *xs, int with_walls, struct shepard *s,
+                long *pairs) {
   const struct parts *p = &e->p;
   struct neighbour_ranges r;
   int dim = p->dim;
@@ -18,7 +13,7 @@ static void shepard_at(const struct engine *e, const double *xs, struct shepard 
   neighbour_ranges(&e->space, grid_cell_clamped(&e->space.grid, xs), &r);
   for (int k = 0; k < r.n; k++)
     for (long j = r.start[k]; j < r.start[k] + r.count[k]; j++) {
-      if (p->phase[j] == PHASE_WALL) continue;
+      if (p->phase[j] == PHASE_WALL && !with_walls) continue;
       double r2 = 0;
       for (int d = 0; d < dim; d++) r2 += (xs[d] - p->x[d][j]) * (xs[d] - p->x[d][j]);
       if (r2 >= e->kern.support2) continue;
@@ -27,7 +22,7 @@ static void shepard_at(const struct engine *e, const double *xs, struct shepard 
       s->wp += wv * p->p[j];
       s->wrho += wv * p->rho[j];
       for (int d = 0; d < dim; d++) s->wu[d] += wv * p->v[d][j];
-      s->w_phase[p->phase[j]] += wv;
+      if (p->phase[j] != PHASE_WALL) s->w_phase[p->phase[j]] += wv;
       (*pairs)++;
     }
 }
@@ -72,7 +67,7 @@ void pass_wall_ghosts(struct engine *e) {
     double xs[3] = {0, 0, 0};
     for (int d = 0; d < p->dim; d++) xs[d] = p->mirror[d][k];
     struct shepard s;
-    shepard_at(e, xs, &s, &pairs);
+    shepard_at(e, xs, 0, &s, &pairs);
     ghost_from_shepard(e, k, xs, &s);
   }
   e->pass_pairs += pairs;
