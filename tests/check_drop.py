@@ -8,7 +8,11 @@ the incompressible analytic solution (derivation in shared notes section 3.8):
 
 The SPH semi-axis is a = 2 sqrt(<x^2>), the volume-weighted second moment of the fluid particles
 (exact for a uniform ellipse). Checks: max |a_SPH - a| / R over the run <= TOL_A; the centre
-pressure probe follows p_c within TOL_P of rho_in omega^2 R^2 (mean absolute deviation).
+pressure probe follows p_c within TOL_P of rho_in omega^2 R^2 (mean absolute deviation) after
+filtering the acoustic noise, as the acceptance of the notes (section 3.8) specifies: both curves
+are averaged over two periods of the drop's fundamental radial acoustic mode,
+2 x 2 pi R / (2.405 c0), c0 of the inner phase read from config.yaml. The unfiltered deviation is
+printed too.
 
 Usage: check_drop.py RUN_DIR [TOL_A TOL_P]   (R = omega = 1 as in cases/oscillating-drop)
 """
@@ -38,6 +42,15 @@ def analytic(t_end, omega=1.0, radius=1.0, n=20000):
     return t, y[:, 0], k_factor
 
 
+def inner_sound_speed(run):
+    """c0 of the first phase, from the resolved case."""
+    with open(os.path.join(run, "config.yaml")) as f:
+        for line in f:
+            if line.strip().startswith("c0:"):
+                return float(line.split(":")[1])
+    raise ValueError("no c0 in config.yaml")
+
+
 def semi_axis(path):
     with h5py.File(path, "r") as f:
         fluid = f["particles/phase"][:] >= 0
@@ -59,10 +72,15 @@ def main(run, tol_a=0.02, tol_p=0.05):
     weight = (rho_in + 3 * rho_out) / 8 if len(phases) > 1 else rho_in / 2
     probes = np.genfromtxt(os.path.join(run, "probes.csv"), delimiter=",", names=True)
     p_exact = weight * np.interp(probes["time"], t, k_factor)
-    err_p = np.mean(np.abs(probes["p_centre"] - p_exact)) / rho_in
+    raw = np.mean(np.abs(probes["p_centre"] - p_exact)) / rho_in
+    window = 2 * 2 * np.pi * 1.0 / (2.405 * inner_sound_speed(run))
+    n = max(int(round(window / (probes["time"][1] - probes["time"][0]))), 1)
+    box = np.ones(n) / n
+    err_p = np.mean(np.abs(np.convolve(probes["p_centre"], box, "valid") - np.convolve(p_exact, box, "valid"))) / rho_in
     print(f"{len(snaps)} snapshots to t = {ts[-1]:.3f}: max |a - a_exact| / R = {err_a:.4f} (limit {tol_a}); "
           f"a(T/4) SPH {np.interp(1.2068, ts, a_sph):.4f} exact {np.interp(1.2068, t, a):.4f}")
-    print(f"centre pressure: mean |p - p_exact| / (rho_in omega^2 R^2) = {err_p:.4f} (limit {tol_p})")
+    print(f"centre pressure: mean |p - p_exact| / (rho_in omega^2 R^2) = {err_p:.4f} after a {window:.3f} s "
+          f"moving average (limit {tol_p}); unfiltered {raw:.4f}")
     ok = err_a <= tol_a and err_p <= tol_p
     print("PASS" if ok else "FAIL")
     return 0 if ok else 1
