@@ -21,8 +21,9 @@ typedef void (*particle_fn)(struct engine *e, long i, const struct neighbour_ran
  *  cell in global order. */
 void pass_for_each_owned(struct engine *e, particle_fn fluid, particle_fn wall);
 
-/** Volumes m/rho of all slots (owned and halo) for the pair passes of this stage [m^dim]. */
-void engine_update_volumes(struct engine *e);
+/** Volumes m/rho of all slots (owned and halo) for the pair passes of this stage [m^dim]; runs
+ *  after the halo updates of the state and the wall ghost values. */
+void pass_volumes(struct engine *e);
 
 /** Shepard sums at one point: sum W V, and sum W V times p, rho, u; weights per phase. */
 struct shepard {

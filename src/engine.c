@@ -204,6 +204,18 @@ int engine_init(struct engine *e, const struct case_def *c, const char *outdir, 
   return engine_open_output(e);
 }
 
+/* Free the free-surface work arrays (region, flags, eigenvalues, normals) and clear them. */
+static void free_surface_arrays(struct work *w) {
+  free(w->surface);
+  free(w->region);
+  free(w->lambda);
+  w->surface = w->region = w->lambda = NULL;
+  for (int d = 0; d < 3; d++) {
+    free(w->normal[d]);
+    w->normal[d] = NULL;
+  }
+}
+
 /* free_surface: auto — after the first step, switch detection off if no particle was found on a
  * free surface at t = 0 (a closed tank full of fluid), and drop its passes and arrays. */
 static void free_surface_auto(struct engine *e) {
@@ -214,14 +226,7 @@ static void free_surface_auto(struct engine *e) {
     printf("free surface: %ld particles detected at t = 0: detection %s\n", n, n ? "kept" : "switched off");
   if (n) return;
   e->no_free_surface = 1;
-  free(e->w.surface);
-  free(e->w.region);
-  free(e->w.lambda);
-  e->w.surface = e->w.region = e->w.lambda = NULL;
-  for (int d = 0; d < 3; d++) {
-    free(e->w.normal[d]);
-    e->w.normal[d] = NULL;
-  }
+  free_surface_arrays(&e->w);
   engine_assemble(e);
   engine_print_pipeline(e);
 }
@@ -260,9 +265,9 @@ int engine_run(struct engine *e) {
 }
 
 void engine_free(struct engine *e) {
+  free_surface_arrays(&e->w);
   for (int d = 0; d < 3; d++) {
     free(e->w.du[d]);
-    free(e->w.normal[d]);
     free(e->w.grad_rho[d]);
     free(e->w.dv[d]);
     free(e->w.x0[d]);
@@ -272,9 +277,6 @@ void engine_free(struct engine *e) {
   }
   free(e->w.vol);
   free(e->w.div);
-  free(e->w.surface);
-  free(e->w.region);
-  free(e->w.lambda);
   free(e->w.drho);
   free(e->w.rho0);
   free(e->w.sum_rho);

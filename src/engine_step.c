@@ -105,6 +105,7 @@ void engine_assemble(struct engine *e) {
     add_op(e, "wall ghosts: Shepard interpolation at mirror points", pass_wall_ghosts, 0, 0);
     add_op(e, "halo: wall ghost values", NULL, HF_VEL | HF_RHO | HF_P | HF_MASS, 0);
   }
+  add_op(e, "volumes m/rho of owned and halo particles", pass_volumes, 0, 0);
   if (f & FEAT_SURFACE) {
     add_op(e, "free surface: eigenvalue + umbrella detection, normals (once per step)", pass_free_surface, 0, 1);
     add_op(e, "halo: free-surface flags (once per step)", NULL, HF_SURFACE, 1);

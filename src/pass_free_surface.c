@@ -102,7 +102,6 @@ static void clear_wall(struct engine *e, long i, const struct neighbour_ranges *
 }
 
 void pass_free_surface(struct engine *e) {
-  engine_update_volumes(e);
   e->n_surface = 0;
   pass_for_each_owned(e, detect, clear_wall);
 }

@@ -51,7 +51,7 @@ static inline __attribute__((always_inline)) int gradients_of(struct engine *e, 
   return fallback;
 }
 
-void engine_update_volumes(struct engine *e) {
+void pass_volumes(struct engine *e) {
   const struct parts *p = &e->p;
   for (long i = 0, n = p->n_owned + p->n_halo; i < n; i++) e->w.vol[i] = p->m[i] / p->rho[i];
 }
@@ -75,7 +75,4 @@ static void gradients(struct engine *e, long i, const struct neighbour_ranges *r
   e->renorm_fallbacks += fallback;
 }
 
-void pass_gradients(struct engine *e) {
-  engine_update_volumes(e);
-  pass_for_each_owned(e, gradients, clear_ghost);
-}
+void pass_gradients(struct engine *e) { pass_for_each_owned(e, gradients, clear_ghost); }
