@@ -7,11 +7,14 @@
 #include "case.h"
 #include "interface.h"
 #include "kernel.h"
+#include "nlist.h"
 #include "parts.h"
 #include "proxy.h"
 #include "space.h"
 
 #define ENGINE_MAX_OPS 16
+#define ENGINE_CELL_SKIN 1.15   /* cell edge / kernel support: room for motion within a step; the
+                                   neighbour lists use the same radius */
 
 struct engine;
 
@@ -67,6 +70,7 @@ struct engine {
   struct halo halo;
   struct parts p;
   struct work w;
+  struct nlist nl;                 /* neighbour lists of the owned fluid, rebuilt every step */
   double h, vol0;                  /* smoothing length [m], dx^dim [m^dim] */
   double c_max;                    /* largest phase sound speed [m/s] */
   unsigned features;               /* FEAT_* of the assembled pipeline */

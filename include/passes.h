@@ -14,12 +14,15 @@ struct neighbour_ranges {
 /** The particle ranges of the 3^dim cells around cell c (those present on this rank). */
 void neighbour_ranges(const struct space *s, long c, struct neighbour_ranges *r);
 
-/** Work on owned particle i with the neighbour ranges of its cell. */
-typedef void (*particle_fn)(struct engine *e, long i, const struct neighbour_ranges *r);
+/** Work on owned particle i with its neighbour list (empty for wall ghosts). */
+typedef void (*particle_fn)(struct engine *e, long i, const struct neighbours *nb);
 
-/** Call fluid (or wall, for wall ghosts; either may be NULL) for every owned particle, cell by
- *  cell in global order. */
+/** Call fluid (or wall, for wall ghosts; either may be NULL) for every owned particle, in slot
+ *  order (which is global cell order). */
 void pass_for_each_owned(struct engine *e, particle_fn fluid, particle_fn wall);
+
+/** Build the neighbour lists of the owned fluid particles (once per step, at the first stage). */
+void pass_neighbour_lists(struct engine *e);
 
 /** Volumes m/rho of all slots (owned and halo) for the pair passes of this stage [m^dim]; runs
  *  after the halo updates of the state and the wall ghost values. */

@@ -8,7 +8,6 @@
 #include "partition.h"
 #include "redistribute.h"
 
-#define CELL_SKIN 1.05          /* cell edge / kernel support: room for motion within a step */
 #define BALANCE_CHECK_EVERY 100 /* steps between load-balance checks (the timing window) */
 #define REPARTITION_MIN_GAP 500 /* steps between imbalance-triggered re-partitions */
 #define MIN_MEASURED_SECONDS 0.05  /* compute time below which timings are too noisy to use */
@@ -153,7 +152,7 @@ static int setup_space(struct engine *e) {
   e->vol0 = c->dimension == 2 ? c->dx * c->dx : c->dx * c->dx * c->dx;
   kernel_init(&e->kern, c->kernel, c->dimension, e->h);
   struct grid g;
-  if (grid_init(&g, c->dimension, c->domain_min, c->domain_max, e->kern.support * CELL_SKIN)) {
+  if (grid_init(&g, c->dimension, c->domain_min, c->domain_max, e->kern.support * ENGINE_CELL_SKIN)) {
     report(e, "the domain has too many cells for this resolution (more than 2^31)");
     return 1;
   }
@@ -266,6 +265,7 @@ int engine_run(struct engine *e) {
 
 void engine_free(struct engine *e) {
   free_surface_arrays(&e->w);
+  nlist_free(&e->nl);
   for (int d = 0; d < 3; d++) {
     free(e->w.du[d]);
     free(e->w.grad_rho[d]);

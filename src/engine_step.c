@@ -4,6 +4,8 @@
 #include "eos.h"
 #include "passes.h"
 
+#define MOTION_SAFETY 0.75   /* fraction of the allowed motion per step used by the dt limit */
+
 static double *grow(double *a, long n) {
   double *q = realloc(a, (n ? n : 1) * sizeof(double));
   if (!q) abort();
@@ -106,6 +108,7 @@ void engine_assemble(struct engine *e) {
     add_op(e, "halo: wall ghost values", NULL, HF_VEL | HF_RHO | HF_P | HF_MASS, 0);
   }
   add_op(e, "volumes m/rho of owned and halo particles", pass_volumes, 0, 0);
+  add_op(e, "neighbour lists of the owned fluid (once per step)", pass_neighbour_lists, 0, 1);
   if (f & FEAT_SURFACE) {
     add_op(e, "free surface: eigenvalue + umbrella detection, normals (once per step)", pass_free_surface, 0, 1);
     add_op(e, "halo: free-surface flags (once per step)", NULL, HF_SURFACE, 1);
@@ -150,23 +153,35 @@ void engine_evaluate(struct engine *e, int skip_state_halo) {
   }
 }
 
-/* Global maximum acceleration and minimum density per phase from the first stage. */
-static double reduce_first_stage(struct engine *e) {
+/* The largest distance a particle may move within one step: half the cell skin, so that the
+ * cells and neighbour lists built at the start of the step still hold every pair in the kernel
+ * support at every stage [m]. */
+static double shift_max(const struct engine *e) { return 0.5 * (ENGINE_CELL_SKIN - 1.0) * e->kern.support; }
+
+/* Global maxima of the acceleration and of the advection speed |u + du| [m/s^2, m/s], and the
+ * minimum density per phase, from the first stage. */
+static void reduce_first_stage(struct engine *e, double *a_max, double *adv_max) {
   const struct parts *p = &e->p;
   int np = e->c->n_phases;
-  double a_max = 0;
+  double max2[2] = {0, 0};   /* |a|^2, |u + du|^2 */
   for (int ph = 0; ph < np; ph++) e->rho_min[ph] = INFINITY;
   for (long i = 0; i < p->n_owned; i++) {
     int ph = p->phase[i];
     if (ph == PHASE_WALL) continue;
-    double a2 = 0;
-    for (int d = 0; d < p->dim; d++) a2 += e->w.dv[d][i] * e->w.dv[d][i];
-    if (!(a2 <= a_max)) a_max = a2;   /* NaN propagates into a_max */
+    double a2 = 0, w2 = 0;
+    for (int d = 0; d < p->dim; d++) {
+      double w = p->v[d][i] + (e->w.du[d] ? e->w.du[d][i] : 0.0);
+      a2 += e->w.dv[d][i] * e->w.dv[d][i];
+      w2 += w * w;
+    }
+    if (!(a2 <= max2[0])) max2[0] = a2;   /* NaN propagates */
+    if (!(w2 <= max2[1])) max2[1] = w2;
     e->rho_min[ph] = fmin(e->rho_min[ph], p->rho[i]);
   }
-  MPI_Allreduce(MPI_IN_PLACE, &a_max, 1, MPI_DOUBLE, MPI_MAX, e->comm);
+  MPI_Allreduce(MPI_IN_PLACE, max2, 2, MPI_DOUBLE, MPI_MAX, e->comm);
   MPI_Allreduce(MPI_IN_PLACE, e->rho_min, np, MPI_DOUBLE, MPI_MIN, e->comm);
-  return sqrt(a_max);
+  *a_max = sqrt(max2[0]);
+  *adv_max = sqrt(max2[1]);
 }
 
 /* The stable sound speed of Eq. 12 for every liquid/gas pair present:
@@ -186,10 +201,12 @@ static double stable_sound_speed(const struct engine *e) {
 /* Global time step of paper 000 Eq. 12: acoustic (with c_stab), acceleration, viscous, damper. */
 static double time_step(struct engine *e) {
   const struct case_def *c = e->c;
-  double a_max = reduce_first_stage(e);
+  double a_max, adv_max;
+  reduce_first_stage(e, &a_max, &adv_max);
   double c_eff = fmax(e->c_max, stable_sound_speed(e));
   double dt = c->cfl * e->h / c_eff;
   if (a_max > 0) dt = fmin(dt, 0.25 * sqrt(e->h / a_max));
+  if (adv_max > 0) dt = fmin(dt, MOTION_SAFETY * shift_max(e) / adv_max);
   for (int ph = 0; ph < c->n_phases; ph++) {
     const struct phase *f = &c->phases[ph];
     if (c->alpha > 0) dt = fmin(dt, e->h / (c->alpha * f->c0));
@@ -233,11 +250,22 @@ static void rk4_update(struct engine *e, int s) {
   }
 }
 
-/* The first owned fluid particle with a non-finite derivative; its quantity in *what. */
+/* 1 if owned particle i has moved farther since the start of the step than the cell skin allows:
+ * the cells and neighbour lists of the step then no longer hold all its neighbours. */
+static int moved_too_far(const struct engine *e, long i) {
+  double limit = shift_max(e), shift2 = 0;
+  for (int d = 0; d < e->p.dim; d++) shift2 += (e->p.x[d][i] - e->w.x0[d][i]) * (e->p.x[d][i] - e->w.x0[d][i]);
+  return !(shift2 <= limit * limit);
+}
+
+/* The first owned fluid particle with a non-finite derivative, or which moved too far within the
+ * step; what tripped in *what. */
 static long first_non_finite(const struct engine *e, const char **what) {
   const struct parts *p = &e->p;
   for (long i = 0; i < p->n_owned; i++) {
     if (p->phase[i] == PHASE_WALL) continue;
+    *what = "moved farther within one step than the cell skin allows (time step too large)";
+    if (moved_too_far(e, i)) return i;
     *what = "drho/dt";
     if (!isfinite(e->w.drho[i])) return i;
     for (int d = 0; d < p->dim; d++) {

@@ -17,27 +17,27 @@
 #define SINGULAR_DET 1e-3   /* det(B) below which the normal is -sum grad W itself */
 
 /* B matrix and sum of kernel gradients of particle i over all neighbours. */
-static void moments(const struct engine *e, long i, const struct neighbour_ranges *r, double *mt,
+static void moments(const struct engine *e, long i, const struct neighbours *nb, double *mt,
                     double *sum_gw, long *pairs) {
   const struct parts *p = &e->p;
   const int dim = p->dim;
   for (int k = 0; k < 9; k++) mt[k] = 0;
   for (int d = 0; d < 3; d++) sum_gw[d] = 0;
-  for (int k = 0; k < r->n; k++)
-    for (long j = r->start[k]; j < r->start[k] + r->count[k]; j++) {
-      double dx[3], r2 = 0;
-      for (int d = 0; d < dim; d++) {
-        dx[d] = p->x[d][i] - p->x[d][j];
-        r2 += dx[d] * dx[d];
-      }
-      if (r2 >= e->kern.support2 || j == i) continue;
-      double fv = kernel_f(&e->kern, r2) * e->w.vol[j];
-      for (int a = 0; a < dim; a++) {
-        sum_gw[a] += fv * dx[a];
-        for (int b = 0; b < dim; b++) mt[a * dim + b] -= fv * dx[a] * dx[b];
-      }
-      (*pairs)++;
+  for (int n = 0; n < nb->n; n++) {
+    const long j = nb->j[n];
+    double dx[3], r2 = 0;
+    for (int d = 0; d < dim; d++) {
+      dx[d] = p->x[d][i] - p->x[d][j];
+      r2 += dx[d] * dx[d];
     }
+    if (r2 >= e->kern.support2) continue;
+    double fv = kernel_f(&e->kern, r2) * e->w.vol[j];
+    for (int a = 0; a < dim; a++) {
+      sum_gw[a] += fv * dx[a];
+      for (int b = 0; b < dim; b++) mt[a * dim + b] -= fv * dx[a] * dx[b];
+    }
+    (*pairs)++;
+  }
 }
 
 /* Outward unit normal -B^-1 sum grad W (or -sum grad W where B is singular); 0 if undefined. */
@@ -51,42 +51,42 @@ static void outward_normal(int dim, const double *mt, const double *sum_gw, doub
 }
 
 /* 1 if some neighbour lies in the umbrella region above candidate i (so i is not on the surface). */
-static int umbrella_covered(const struct engine *e, long i, const struct neighbour_ranges *r,
+static int umbrella_covered(const struct engine *e, long i, const struct neighbours *nb,
                             const double *n) {
   const struct parts *p = &e->p;
   const int dim = p->dim;
   const double h = e->h;
   double t[3];
   for (int d = 0; d < dim; d++) t[d] = p->x[d][i] + h * n[d];
-  for (int k = 0; k < r->n; k++)
-    for (long j = r->start[k]; j < r->start[k] + r->count[k]; j++) {
-      double rij2 = 0, rt[3], rt2 = 0, rn = 0;
-      for (int d = 0; d < dim; d++) {
-        double dij = p->x[d][j] - p->x[d][i];
-        rij2 += dij * dij;
-        rt[d] = p->x[d][j] - t[d];
-        rt2 += rt[d] * rt[d];
-        rn += rt[d] * n[d];
-      }
-      if (j == i || rij2 >= e->kern.support2) continue;
-      if (rij2 >= 2 * h * h) {
-        if (rt2 < h * h) return 1;
-      } else if (fabs(rn) + sqrt(fmax(rt2 - rn * rn, 0.0)) < h) {
-        return 1;
-      }
+  for (int k = 0; k < nb->n; k++) {
+    const long j = nb->j[k];
+    double rij2 = 0, rt[3], rt2 = 0, rn = 0;
+    for (int d = 0; d < dim; d++) {
+      double dij = p->x[d][j] - p->x[d][i];
+      rij2 += dij * dij;
+      rt[d] = p->x[d][j] - t[d];
+      rt2 += rt[d] * rt[d];
+      rn += rt[d] * n[d];
     }
+    if (rij2 >= e->kern.support2) continue;
+    if (rij2 >= 2 * h * h) {
+      if (rt2 < h * h) return 1;
+    } else if (fabs(rn) + sqrt(fmax(rt2 - rn * rn, 0.0)) < h) {
+      return 1;
+    }
+  }
   return 0;
 }
 
 /* Classify owned fluid particle i. */
-static void detect(struct engine *e, long i, const struct neighbour_ranges *r) {
+static void detect(struct engine *e, long i, const struct neighbours *nb) {
   const int dim = e->p.dim;
   double mt[9], sum_gw[3], n[3];
-  moments(e, i, r, mt, sum_gw, &e->pass_pairs);
+  moments(e, i, nb, mt, sum_gw, &e->pass_pairs);
   double lambda = linalg_min_eigenvalue(dim, mt);
   outward_normal(dim, mt, sum_gw, n);
   int surface = lambda <= LAMBDA_SURFACE;
-  if (!surface && lambda <= LAMBDA_INTERIOR) surface = !umbrella_covered(e, i, r, n);
+  if (!surface && lambda <= LAMBDA_INTERIOR) surface = !umbrella_covered(e, i, nb, n);
   e->w.surface[i] = surface;
   e->w.lambda[i] = lambda;
   for (int d = 0; d < dim; d++) e->w.normal[d][i] = n[d];
@@ -94,8 +94,8 @@ static void detect(struct engine *e, long i, const struct neighbour_ranges *r) {
 }
 
 /* A wall ghost is never on the free surface. */
-static void clear_wall(struct engine *e, long i, const struct neighbour_ranges *r) {
-  (void)r;
+static void clear_wall(struct engine *e, long i, const struct neighbours *nb) {
+  (void)nb;
   e->w.surface[i] = 0;
   e->w.region[i] = 0;
   e->w.lambda[i] = 1;
@@ -107,17 +107,17 @@ void pass_free_surface(struct engine *e) {
 }
 
 /* 1 if fluid particle i lies within surface_band h of a detected particle (or is one). */
-static void band_of(struct engine *e, long i, const struct neighbour_ranges *r) {
+static void band_of(struct engine *e, long i, const struct neighbours *nb) {
   const struct parts *p = &e->p;
   double band = fmin(e->c->surface_band * e->h, e->kern.support), band2 = band * band;
   int in = e->w.surface[i] > 0;
-  for (int q = 0; q < r->n && !in; q++)
-    for (long j = r->start[q]; j < r->start[q] + r->count[q] && !in; j++) {
-      if (e->w.surface[j] <= 0) continue;
-      double r2 = 0;
-      for (int d = 0; d < p->dim; d++) r2 += (p->x[d][i] - p->x[d][j]) * (p->x[d][i] - p->x[d][j]);
-      in = r2 < band2;
-    }
+  for (int k = 0; k < nb->n && !in; k++) {
+    const long j = nb->j[k];
+    if (e->w.surface[j] <= 0) continue;
+    double r2 = 0;
+    for (int d = 0; d < p->dim; d++) r2 += (p->x[d][i] - p->x[d][j]) * (p->x[d][i] - p->x[d][j]);
+    in = r2 < band2;
+  }
   e->w.region[i] = in;
 }
 

@@ -13,7 +13,7 @@
 /* Sums of particle i; inlined with literal dim and shift so the loops specialise. Returns 1 if
  * the renormalisation fell back to the identity. */
 static inline __attribute__((always_inline)) int gradients_of(struct engine *e, long i,
-                                                              const struct neighbour_ranges *r,
+                                                              const struct neighbours *nb,
                                                               long *pairs, const int dim,
                                                               const int shift) {
   struct parts *p = &e->p;
@@ -21,27 +21,27 @@ static inline __attribute__((always_inline)) int gradients_of(struct engine *e, 
   const double *vol = e->w.vol;
   double mt[9] = {0}, g[3] = {0}, sum_gw[3] = {0}, div = 0, out[3];
   int n_nb = 0;
-  for (int k = 0; k < r->n; k++)
-    for (long j = r->start[k]; j < r->start[k] + r->count[k]; j++) {
-      double dx[3], r2 = 0, dvdx = 0;
-      for (int d = 0; d < dim; d++) {
-        dx[d] = p->x[d][i] - p->x[d][j];
-        r2 += dx[d] * dx[d];
-        dvdx += (p->v[d][j] - p->v[d][i]) * dx[d];
-      }
-      if (r2 >= e->kern.support2 || j == i) continue;
-      double fv = kernel_f(&e->kern, r2) * vol[j];
-      div += fv * dvdx;
-      n_nb++;
-      if (shift)
-        for (int d = 0; d < dim; d++) sum_gw[d] += fv * dx[d];
-      if (p->phase[j] != ph) continue;
-      double drho = p->rho[j] - p->rho[i];
-      for (int a = 0; a < dim; a++) {
-        g[a] += drho * fv * dx[a];
-        for (int b = 0; b < dim; b++) mt[a * dim + b] -= fv * dx[a] * dx[b];  /* (M)_ab = B_ba */
-      }
+  for (int n = 0; n < nb->n; n++) {
+    const long j = nb->j[n];
+    double dx[3], r2 = 0, dvdx = 0;
+    for (int d = 0; d < dim; d++) {
+      dx[d] = p->x[d][i] - p->x[d][j];
+      r2 += dx[d] * dx[d];
+      dvdx += (p->v[d][j] - p->v[d][i]) * dx[d];
     }
+    if (r2 >= e->kern.support2) continue;
+    double fv = kernel_f(&e->kern, r2) * vol[j];
+    div += fv * dvdx;
+    n_nb++;
+    if (shift)
+      for (int d = 0; d < dim; d++) sum_gw[d] += fv * dx[d];
+    if (p->phase[j] != ph) continue;
+    double drho = p->rho[j] - p->rho[i];
+    for (int a = 0; a < dim; a++) {
+      g[a] += drho * fv * dx[a];
+      for (int b = 0; b < dim; b++) mt[a * dim + b] -= fv * dx[a] * dx[b];  /* (M)_ab = B_ba */
+    }
+  }
   *pairs += n_nb;
   double det = linalg_solve(dim, mt, g, out);
   int fallback = !(fabs(det) >= RENORM_MIN_DET);
@@ -57,8 +57,8 @@ void pass_volumes(struct engine *e) {
 }
 
 /* Zero the gradient-pass results of a wall ghost. */
-static void clear_ghost(struct engine *e, long i, const struct neighbour_ranges *r) {
-  (void)r;
+static void clear_ghost(struct engine *e, long i, const struct neighbours *nb) {
+  (void)nb;
   for (int d = 0; d < e->p.dim; d++) {
     e->w.grad_rho[d][i] = 0;
     if (e->w.du[d]) e->w.du[d][i] = 0;
@@ -67,11 +67,11 @@ static void clear_ghost(struct engine *e, long i, const struct neighbour_ranges 
 }
 
 /* The specialisation of gradients_of for the dimension and shifting. */
-static void gradients(struct engine *e, long i, const struct neighbour_ranges *r) {
+static void gradients(struct engine *e, long i, const struct neighbours *nb) {
   long *pairs = &e->pass_pairs;
   int shift = (e->features & FEAT_SHIFT) != 0, fallback;
-  if (e->p.dim == 2) fallback = shift ? gradients_of(e, i, r, pairs, 2, 1) : gradients_of(e, i, r, pairs, 2, 0);
-  else fallback = shift ? gradients_of(e, i, r, pairs, 3, 1) : gradients_of(e, i, r, pairs, 3, 0);
+  if (e->p.dim == 2) fallback = shift ? gradients_of(e, i, nb, pairs, 2, 1) : gradients_of(e, i, nb, pairs, 2, 0);
+  else fallback = shift ? gradients_of(e, i, nb, pairs, 3, 1) : gradients_of(e, i, nb, pairs, 3, 0);
   e->renorm_fallbacks += fallback;
 }
 

@@ -1,4 +1,5 @@
-/* pass_neighbours.c — the neighbour cells of a cell as ranges of particle slots. */
+/* pass_neighbours.c — the neighbour cells of a cell as ranges of particle slots; the loop over
+ * owned particles with their neighbour lists. */
 #include "passes.h"
 
 void neighbour_ranges(const struct space *s, long c, struct neighbour_ranges *r) {
@@ -14,15 +15,14 @@ void neighbour_ranges(const struct space *s, long c, struct neighbour_ranges *r)
 }
 
 void pass_for_each_owned(struct engine *e, particle_fn fluid, particle_fn wall) {
-  const struct space *s = &e->space;
-  for (long k = 0; k < s->n_owned_cells; k++) {
-    long c = s->owned_cells[k];
-    if (!s->cell_count[c]) continue;
-    struct neighbour_ranges r;
-    neighbour_ranges(s, c, &r);
-    for (long i = s->cell_start[c]; i < s->cell_start[c] + s->cell_count[c]; i++) {
-      particle_fn fn = e->p.phase[i] == PHASE_WALL ? wall : fluid;
-      if (fn) fn(e, i, &r);
-    }
+  const struct parts *p = &e->p;
+  for (long i = 0; i < p->n_owned; i++) {
+    particle_fn fn = p->phase[i] == PHASE_WALL ? wall : fluid;
+    struct neighbours nb = nlist_of(&e->nl, i);
+    if (fn) fn(e, i, &nb);
   }
+}
+
+void pass_neighbour_lists(struct engine *e) {
+  nlist_build(&e->nl, &e->space, &e->p, e->kern.support * ENGINE_CELL_SKIN);
 }
