@@ -13,6 +13,7 @@ struct proxy {
   long *cells_out;        /* owned cells within halo reach of the neighbour's cells, ascending */
   long n_send, n_recv;    /* particles sent / received in the current halo */
   long *send_index;       /* owned slots sent, in (cell, id) order */
+  long send_index_cap;
   long recv_first;        /* first halo slot of the received particles */
   double *send_buf, *recv_buf;
   long send_cap, recv_cap;   /* buffer capacities in doubles */
@@ -23,6 +24,8 @@ struct halo {
   int n_proxies;
   struct proxy *proxies;
   int *proxy_of_rank;     /* proxy index of each rank, -1 if not a neighbour */
+  MPI_Request *requests;  /* scratch: 2 (n_proxies + 1) requests */
+  long *counts;           /* scratch: 4 (n_proxies + 1) counts */
   long n_messages, n_bytes;   /* counters since start */
 };
 

@@ -84,6 +84,14 @@ void halo_build(struct halo *h, const struct space *s, MPI_Comm comm) {
       if (row[k]) px->cells_out[px->n_cells_out++] = s->owned_cells[k];
   }
   free(mark);
+  h->requests = malloc(2 * (h->n_proxies + 1) * sizeof(MPI_Request));
+  h->counts = malloc(4 * (h->n_proxies + 1) * sizeof(long));
+}
+
+/* The halo's count scratch (4 rows of n_proxies + 1), zeroed. */
+static long *zeroed_counts(struct halo *h) {
+  memset(h->counts, 0, 4 * (h->n_proxies + 1) * sizeof(long));
+  return h->counts;
 }
 
 void halo_free(struct halo *h) {
@@ -96,6 +104,8 @@ void halo_free(struct halo *h) {
   }
   free(h->proxies);
   free(h->proxy_of_rank);
+  free(h->requests);
+  free(h->counts);
   long messages = h->n_messages, bytes = h->n_bytes;
   memset(h, 0, sizeof(*h));
   h->n_messages = messages;
@@ -106,7 +116,10 @@ void halo_free(struct halo *h) {
 static void collect_send(struct proxy *px, const struct space *s) {
   long n = 0;
   for (long k = 0; k < px->n_cells_out; k++) n += s->cell_count[px->cells_out[k]];
-  px->send_index = xrealloc(px->send_index, (n ? n : 1) * sizeof(long));
+  if (n > px->send_index_cap) {
+    px->send_index_cap = n + n / 4 + 64;
+    px->send_index = xrealloc(px->send_index, px->send_index_cap * sizeof(long));
+  }
   px->n_send = 0;
   for (long k = 0; k < px->n_cells_out; k++) {
     long c = px->cells_out[k], start = s->cell_start[c];
@@ -116,19 +129,18 @@ static void collect_send(struct proxy *px, const struct space *s) {
 
 /* Exchange one count per proxy: send[k] goes to proxy k, recv[k] comes from it. */
 static void exchange_counts(struct halo *h, const long *send, long *recv, int tag) {
-  MPI_Request *req = malloc(2 * (h->n_proxies + 1) * sizeof(MPI_Request));
+  MPI_Request *req = h->requests;
   for (int k = 0; k < h->n_proxies; k++) {
     MPI_Irecv(&recv[k], 1, MPI_LONG, h->proxies[k].rank, tag, h->comm, &req[2 * k]);
     MPI_Isend(&send[k], 1, MPI_LONG, h->proxies[k].rank, tag, h->comm, &req[2 * k + 1]);
   }
   MPI_Waitall(2 * h->n_proxies, req, MPI_STATUSES_IGNORE);
-  free(req);
 }
 
 /* Post the exchange of send_buf (n_send_vals) / recv_buf (n_recv_vals) with every proxy and wait. */
 static void exchange_buffers(struct halo *h, const long *n_send_vals, const long *n_recv_vals,
                              int tag) {
-  MPI_Request *req = malloc(2 * (h->n_proxies + 1) * sizeof(MPI_Request));
+  MPI_Request *req = h->requests;
   int nreq = 0;
   for (int k = 0; k < h->n_proxies; k++) {
     struct proxy *px = &h->proxies[k];
@@ -141,12 +153,11 @@ static void exchange_buffers(struct halo *h, const long *n_send_vals, const long
     }
   }
   MPI_Waitall(nreq, req, MPI_STATUSES_IGNORE);
-  free(req);
 }
 
 void halo_rebuild(struct halo *h, const struct space *s, struct parts *p) {
   int np = h->n_proxies, w = parts_packed_size(p);
-  long *counts = calloc(4 * (np + 1), sizeof(long));
+  long *counts = zeroed_counts(h);
   long *n_send = counts, *n_recv = counts + np + 1, *vals_send = counts + 2 * (np + 1),
        *vals_recv = counts + 3 * (np + 1);
   for (int k = 0; k < np; k++) {
@@ -173,13 +184,12 @@ void halo_rebuild(struct halo *h, const struct space *s, struct parts *p) {
     for (long i = 0; i < px->n_recv; i++) parts_unpack(p, px->recv_first + i, px->recv_buf + i * w);
   }
   p->n_halo = total;
-  free(counts);
 }
 
 void halo_update(struct halo *h, const struct parts *p, double *const *fields, int n_fields) {
   (void)p;
   int np = h->n_proxies;
-  long *vals = calloc(2 * (np + 1), sizeof(long));
+  long *vals = zeroed_counts(h);
   for (int k = 0; k < np; k++) {
     struct proxy *px = &h->proxies[k];
     vals[k] = px->n_send * n_fields;
@@ -200,7 +210,6 @@ void halo_update(struct halo *h, const struct parts *p, double *const *fields, i
       memcpy(dst, src, px->n_recv * sizeof(double));
     }
   }
-  free(vals);
 }
 
 /* The id of an owned particle whose new owner is neither this rank nor a neighbour, or -1. */
@@ -235,15 +244,12 @@ static void pack_strays(struct halo *h, const struct space *s, struct parts *p, 
 
 int64_t halo_migrate(struct halo *h, const struct space *s, struct parts *p) {
   int np = h->n_proxies, w = parts_packed_size(p);
-  long *counts = calloc(4 * (np + 1), sizeof(long));
+  long *counts = zeroed_counts(h);
   long *n_out = counts, *n_in = counts + np + 1, *vals_out = counts + 2 * (np + 1),
        *vals_in = counts + 3 * (np + 1);
   int64_t lost = first_lost(h, s, p), lost_any;
   MPI_Allreduce(&lost, &lost_any, 1, MPI_INT64_T, MPI_MAX, h->comm);
-  if (lost_any >= 0) {
-    free(counts);
-    return lost_any;
-  }
+  if (lost_any >= 0) return lost_any;
   pack_strays(h, s, p, n_out);
   exchange_counts(h, n_out, n_in, TAG_MIGRATE_COUNT);
   long total = 0;
@@ -257,6 +263,5 @@ int64_t halo_migrate(struct halo *h, const struct space *s, struct parts *p) {
   parts_reserve(p, p->n_owned + total);
   for (int k = 0; k < np; k++)
     for (long i = 0; i < n_in[k]; i++) parts_unpack(p, p->n_owned++, h->proxies[k].recv_buf + i * w);
-  free(counts);
   return -1;
 }
