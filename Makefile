@@ -34,6 +34,9 @@ OPT_native   := -O3 -march=native
 VERSION := $(shell git describe --always --dirty 2>/dev/null || echo unknown)
 
 CFLAGS  ?= $(OPT_$(ARCH)) -g
+ifeq ($(SINGLE_PHASE),1)   # benchmark variant: multiphase specialisations compiled out
+  CFLAGS += -DMPSPH_SINGLE_PHASE
+endif
 CFLAGS  += -std=c11 -D_POSIX_C_SOURCE=200809L -Wall -Wextra -Werror -Iinclude \
            -DMPSPH_VERSION='"$(VERSION)"' $(HDF5_CFLAGS) $(METIS_CFLAGS) $(YAML_CFLAGS)
 LDLIBS  := $(HDF5_LIBS) $(METIS_LIBS) $(YAML_LIBS) -lm

@@ -30,15 +30,16 @@ struct fluid_sums {
 };
 
 /* Loop over the neighbours of i; terms DU (delta-u), DAMP (acoustic damper: 1 symmetric,
- * 2 difference form), SHARP (sharpness) and the dimension are compile-time constants in each
- * specialisation. The sums are accumulated in locals and the arrays read through restrict
+ * 2 difference form), PHASES (0: one fluid phase, so no pair is of the other-phase relation;
+ * 1: several phases; 2: several phases with the sharpness force) and the dimension are
+ * compile-time constants in each specialisation. The sums are accumulated in locals and the arrays read through restrict
  * pointers, so that nothing goes through memory inside the loop. */
 static inline __attribute__((always_inline)) void fluid_sums(const struct engine *e,
                                                              const struct centre *ci,
                                                              const struct neighbours *nb,
                                                              struct fluid_sums *out, long *pairs,
                                                              const int dim, const int DU,
-                                                             const int DAMP, const int SHARP) {
+                                                             const int DAMP, const int PHASES) {
   const struct parts *p = &e->p;
   const struct work *w = &e->w;
   const double *restrict x[3] = {p->x[0], p->x[1], p->x[2]}, *restrict v[3] = {p->v[0], p->v[1], p->v[2]};
@@ -71,7 +72,7 @@ static inline __attribute__((always_inline)) void fluid_sums(const struct engine
     if (r2 >= support2) continue;
     n_pairs++;
     const double fv = kernel_f(&e->kern, r2) * vol[j];
-    const int rel = phase[j] == ph ? PAIR_SAME : (phase[j] == PHASE_WALL ? PAIR_WALL : PAIR_OTHER);
+    const int rel = phase[j] == PHASE_WALL ? PAIR_WALL : (!PHASES || phase[j] == ph) ? PAIR_SAME : PAIR_OTHER;
     double psum = pres[j] + p_sign * pi;
     for (int d = 0; d < dim; d++) s.grad_p[d] += psum * fv * dx[d];
     if (DU) {
@@ -91,9 +92,9 @@ static inline __attribute__((always_inline)) void fluid_sums(const struct engine
       double dsum = (rel == PAIR_SAME ? div[j] : 0.0) + div[i];
       for (int d = 0; d < dim; d++) s.damper[d] += dsum * fv * dx[d];
     }
-    if (SHARP && rel == PAIR_OTHER)
+    if (PHASES == 2 && rel == PAIR_OTHER)
       for (int d = 0; d < dim; d++) s.sharp[d] -= (fabs(pi) + fabs(pres[j])) * fv * dx[d];
-    if (rel == PAIR_OTHER) continue;
+    if (PHASES && rel == PAIR_OTHER) continue;
     const double pi_ij = -dvdx / (r2 + eta2);   /* u_ji . r_ji / (r^2 + 0.01 h^2), r_ji = -dx */
     for (int d = 0; d < dim; d++) s.visc[d] += pi_ij * fv * dx[d];
     if (rel == PAIR_WALL) continue;
@@ -107,19 +108,25 @@ static inline __attribute__((always_inline)) void fluid_sums(const struct engine
   *pairs += n_pairs;
 }
 
-#define FLUID_SUMS(D, U, A, S) fluid_sums(e, ci, nb, s, pairs, D, U, A, S)
-#define DAMPED(D, U, S) (damp == 0 ? FLUID_SUMS(D, U, 0, S) : damp == 1 ? FLUID_SUMS(D, U, 1, S) : FLUID_SUMS(D, U, 2, S))
-#define SHARPENED(D, U) (sharp ? DAMPED(D, U, 1) : DAMPED(D, U, 0))
+#define FLUID_SUMS(D, U, A, P) fluid_sums(e, ci, nb, s, pairs, D, U, A, P)
+#define DAMPED(D, U, P) (damp == 0 ? FLUID_SUMS(D, U, 0, P) : damp == 1 ? FLUID_SUMS(D, U, 1, P) : FLUID_SUMS(D, U, 2, P))
+#ifdef MPSPH_SINGLE_PHASE   /* benchmark build: the multiphase specialisations compiled out */
+#define PHASED(D, U) DAMPED(D, U, 0)
+#else
+#define PHASED(D, U) (phases == 0 ? DAMPED(D, U, 0) : phases == 1 ? DAMPED(D, U, 1) : DAMPED(D, U, 2))
+#endif
 
 /* Call the specialisation of fluid_sums for the case's terms. */
 static void dispatch(const struct engine *e, const struct centre *ci, const struct neighbours *nb,
                      struct fluid_sums *s, long *pairs) {
   unsigned f = e->features;
-  int du = (f & FEAT_DELTA_U) != 0, sharp = (f & FEAT_SHARPNESS) != 0;
+  int du = (f & FEAT_DELTA_U) != 0;
+  int phases = e->c->n_phases == 1 ? 0 : (f & FEAT_SHARPNESS) ? 2 : 1;
   int damp = !(f & FEAT_DAMPER) ? 0 : e->c->damper_form == DAMPER_SYMMETRIC ? 1 : 2;
   if (!e->c->phases[ci->phase].incompressible) damp = 0;
-  if (e->p.dim == 2) du ? SHARPENED(2, 1) : SHARPENED(2, 0);
-  else du ? SHARPENED(3, 1) : SHARPENED(3, 0);
+  (void)phases;
+  if (e->p.dim == 2) du ? PHASED(2, 1) : PHASED(2, 0);
+  else du ? PHASED(3, 1) : PHASED(3, 0);
 }
 
 /* Body force per unit mass at particle i: gravity and the quadratic potential. */

@@ -10,33 +10,41 @@
 
 #define RENORM_MIN_DET 0.1   /* det of the matrix below which L falls back to the identity */
 
-/* Sums of particle i; inlined with literal dim and shift so the loops specialise. Returns 1 if
- * the renormalisation fell back to the identity. */
+/* Sums of particle i; inlined with literal dim, shift and multi (several phases) so that the
+ * loops specialise. The arrays are read through restrict pointers and the sums kept in locals.
+ * Returns 1 if the renormalisation fell back to the identity. */
 static inline __attribute__((always_inline)) int gradients_of(struct engine *e, long i,
                                                               const struct neighbours *nb,
                                                               long *pairs, const int dim,
-                                                              const int shift) {
-  struct parts *p = &e->p;
-  const int ph = p->phase[i];
-  const double *vol = e->w.vol;
-  double mt[9] = {0}, g[3] = {0}, sum_gw[3] = {0}, div = 0, out[3];
+                                                              const int shift, const int multi) {
+  const struct parts *p = &e->p;
+  const double *restrict x[3] = {p->x[0], p->x[1], p->x[2]}, *restrict v[3] = {p->v[0], p->v[1], p->v[2]};
+  const double *restrict vol = e->w.vol, *restrict rho = p->rho;
+  const int *restrict phase = p->phase;
+  const int ph = phase[i];
+  const double support2 = e->kern.support2, rhoi = rho[i];
+  double xi[3], vi[3], mt[9] = {0}, g[3] = {0}, sum_gw[3] = {0}, div = 0, out[3];
+  for (int d = 0; d < dim; d++) {
+    xi[d] = x[d][i];
+    vi[d] = v[d][i];
+  }
   int n_nb = 0;
   for (int n = 0; n < nb->n; n++) {
     const long j = nb->j[n];
     double dx[3], r2 = 0, dvdx = 0;
     for (int d = 0; d < dim; d++) {
-      dx[d] = p->x[d][i] - p->x[d][j];
+      dx[d] = xi[d] - x[d][j];
       r2 += dx[d] * dx[d];
-      dvdx += (p->v[d][j] - p->v[d][i]) * dx[d];
+      dvdx += (v[d][j] - vi[d]) * dx[d];
     }
-    if (r2 >= e->kern.support2) continue;
+    if (r2 >= support2) continue;
     double fv = kernel_f(&e->kern, r2) * vol[j];
     div += fv * dvdx;
     n_nb++;
     if (shift)
       for (int d = 0; d < dim; d++) sum_gw[d] += fv * dx[d];
-    if (p->phase[j] != ph) continue;
-    double drho = p->rho[j] - p->rho[i];
+    if (multi ? phase[j] != ph : phase[j] == PHASE_WALL) continue;
+    double drho = rho[j] - rhoi;
     for (int a = 0; a < dim; a++) {
       g[a] += drho * fv * dx[a];
       for (int b = 0; b < dim; b++) mt[a * dim + b] -= fv * dx[a] * dx[b];  /* (M)_ab = B_ba */
@@ -66,12 +74,20 @@ static void clear_ghost(struct engine *e, long i, const struct neighbours *nb) {
   e->w.div[i] = 0;
 }
 
-/* The specialisation of gradients_of for the dimension and shifting. */
+#define GRADIENTS_OF(D, S, M) gradients_of(e, i, nb, pairs, D, S, M)
+#ifdef MPSPH_SINGLE_PHASE   /* benchmark build: the multiphase specialisations compiled out */
+#define PHASED(D, S) GRADIENTS_OF(D, S, 0)
+#else
+#define PHASED(D, S) (multi ? GRADIENTS_OF(D, S, 1) : GRADIENTS_OF(D, S, 0))
+#endif
+
+/* The specialisation of gradients_of for the dimension, shifting and the number of phases. */
 static void gradients(struct engine *e, long i, const struct neighbours *nb) {
   long *pairs = &e->pass_pairs;
-  int shift = (e->features & FEAT_SHIFT) != 0, fallback;
-  if (e->p.dim == 2) fallback = shift ? gradients_of(e, i, nb, pairs, 2, 1) : gradients_of(e, i, nb, pairs, 2, 0);
-  else fallback = shift ? gradients_of(e, i, nb, pairs, 3, 1) : gradients_of(e, i, nb, pairs, 3, 0);
+  int shift = (e->features & FEAT_SHIFT) != 0, multi = e->c->n_phases > 1, fallback;
+  (void)multi;
+  if (e->p.dim == 2) fallback = shift ? PHASED(2, 1) : PHASED(2, 0);
+  else fallback = shift ? PHASED(3, 1) : PHASED(3, 0);
   e->renorm_fallbacks += fallback;
 }
 
