@@ -3,6 +3,7 @@
 #define MPSPH_CASE_H
 
 #include <stddef.h>
+#include "motion.h"
 
 #define CASE_MAX_NAME 64
 #define CASE_MAX_PHASES 8
@@ -57,6 +58,8 @@ struct wall {
   struct shape shape;
   enum slip_kind slip;
   enum fluid_side fluid_side;   /* inside: a tank (ghosts outside the shape); outside: an obstacle */
+  int moving;                   /* the wall follows `motion` (else it is fixed) */
+  struct wall_motion motion;
 };
 
 /** A probe read at probes.output interval. */

@@ -79,6 +79,9 @@ struct engine {
   struct interface_weights iface[3];   /* eps/phi/kappa per pair relation (case interface mode) */
   double damper_coef[CASE_MAX_PHASES + 1];  /* alpha2 c0 h of phase k at [k + 1]; 0 for gases, walls [m^2/s] */
   double time, dt;                 /* [s] */
+  double stage_time;               /* time of the state the current stage evaluates [s] */
+  int moving_walls;                /* the case has walls with a prescribed motion */
+  struct frame frames[CASE_MAX_WALLS];   /* the moving walls' frames at stage_time */
   long step;
   double step_start_time;          /* time and step at the start of the current step */
   long step_start;

@@ -20,7 +20,8 @@ struct parts {
   int *phase;          /* phase index, PHASE_WALL for ghosts */
   int64_t *id;         /* unique, stable id */
   int *cell;           /* global cell index */
-  double *mirror[3];   /* ghosts: interpolation point (mirror across the wall) [m]; NULL without walls */
+  double *mirror[3];   /* ghosts: offset from the ghost to its interpolation point (the mirror across
+                          the wall) in the wall's frame at t = 0 [m]; NULL without walls */
   int *wall;           /* ghosts: index of the wall in the case; -1 for fluid */
 };
 

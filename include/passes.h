@@ -39,6 +39,10 @@ struct shepard {
 void shepard_at(const struct engine *e, const double *xs, int with_walls, struct shepard *s,
                 long *pairs);
 
+/** The mirror point of wall ghost k now [m]: its position plus its body-frame offset (the
+ *  mirror array), turned with the wall. */
+void wall_mirror_point(const struct engine *e, long k, double *xs);
+
 /** Wall ghosts: Shepard interpolation of p, u at the mirror point, hydrostatic pressure
  *  correction and free-/no-slip velocity (Marrone et al. 2011). Owned ghosts only. */
 void pass_wall_ghosts(struct engine *e);

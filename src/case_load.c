@@ -28,6 +28,7 @@ static const char *const PRESSURE_NAMES[] = {"hydrostatic", "zero", NULL};
 static const char *const BOOL_NAMES[] = {"false", "true", NULL};
 static const char *const FREE_SURFACE_NAMES[] = {"auto", "on", "off", NULL};
 static const char *const DAMPER_NAMES[] = {"difference", "symmetric", NULL};
+static const char *const RAMP_NAMES[] = {"none", "linear", "smooth", NULL};
 
 /* The keys allowed in each mapping. */
 static const char *const ROOT_KEYS[] = {"name", "description", "dimension", "scheme", "kernel",
@@ -45,7 +46,11 @@ static const char *const PHASE_KEYS[] = {"name", "rho0", "c0", "gamma", "p_backg
 static const char *const FLUID_KEYS[] = {"phase", "box", "circle", "polygon", "velocity",
                                          "velocity_gradient", NULL};
 static const char *const POTENTIAL_KEYS[] = {"omega", "centre", NULL};
-static const char *const WALL_KEYS[] = {"box", "circle", "polygon", "slip", "fluid_side", NULL};
+static const char *const WALL_KEYS[] = {"box", "circle", "polygon", "slip", "fluid_side", "motion", NULL};
+static const char *const MOTION_KEYS[] = {"translation", "rotation", NULL};
+static const char *const TRANSLATION_KEYS[] = {"amplitude", "period", "phase", "ramp", NULL};
+static const char *const ROTATION_KEYS[] = {"amplitude", "period", "phase", "ramp", "centre", NULL};
+static const char *const RAMP_KEYS[] = {"shape", "time", NULL};
 static const char *const PHYSICS_KEYS[] = {"delta", "artificial_viscosity", "acoustic_damper",
                                            "shifting", "u_max", "tensile_control", "free_surface",
                                            "surface_band", "interface_mode", "damper_form",
@@ -500,11 +505,43 @@ static int read_fluid(const struct map *m, struct case_def *c, int i) {
          vec(m, "velocity", 0, f->velocity) || matrix(m, "velocity_gradient", f->velocity_gradient);
 }
 
+/* The ramp of a motion law: {shape: none | linear | smooth, time: seconds}. */
+static int read_ramp(const struct map *law, struct motion_law *l) {
+  struct map m;
+  int kind;
+  if (sub(law, "ramp", RAMP_KEYS, &m) || choice(&m, "shape", RAMP_NAMES, RAMP_NONE, &kind)) return 1;
+  l->ramp = (enum ramp_kind)kind;
+  return num(&m, "time", &R_POSITIVE, kind == RAMP_NONE ? 1.0 : REQUIRED, &l->ramp_time);
+}
+
+/* A translation (vector amplitude [m]) or rotation (angle amplitude [rad]) law under key; the
+ * law stays inactive when the key is absent. */
+static int read_law(const struct map *motion, const char *key, const char *const *keys, int vector,
+                    struct motion_law *l, struct map *m) {
+  if (sub(motion, key, keys, m)) return 1;
+  l->active = m->node != NULL;
+  if (!l->active) return 0;
+  return (vector ? vec(m, "amplitude", 1, l->amplitude) : num(m, "amplitude", &R_ANY, REQUIRED, l->amplitude)) ||
+         num(m, "period", &R_POSITIVE, REQUIRED, &l->period) || num(m, "phase", &R_ANY, 0, &l->phase) ||
+         read_ramp(m, l);
+}
+
+/* The prescribed motion of a wall (absent: the wall is fixed). */
+static int read_motion(const struct map *wall, struct wall *w) {
+  struct map m, translation, rotation;
+  if (sub(wall, "motion", MOTION_KEYS, &m)) return 1;
+  w->moving = m.node != NULL;
+  return w->moving &&
+         (read_law(&m, "translation", TRANSLATION_KEYS, 1, &w->motion.translation, &translation) ||
+          read_law(&m, "rotation", ROTATION_KEYS, 0, &w->motion.rotation, &rotation) ||
+          (w->motion.rotation.active && vec(&rotation, "centre", 1, w->motion.centre)));
+}
+
 static int read_wall(const struct map *m, struct case_def *c, int i) {
   struct wall *w = &c->walls[i];
   int slip, side;
   if (shape(m, &w->shape) || choice(m, "slip", SLIP_NAMES, SLIP_FREE, &slip) ||
-      choice(m, "fluid_side", SIDE_NAMES, FLUID_INSIDE, &side))
+      choice(m, "fluid_side", SIDE_NAMES, FLUID_INSIDE, &side) || read_motion(m, w))
     return 1;
   w->slip = (enum slip_kind)slip;
   w->fluid_side = (enum fluid_side)side;
@@ -754,6 +791,26 @@ static void put_head(FILE *f, const struct case_def *c) {
   put_vec(f, "  ", "max", c->domain_max, dim);
 }
 
+/* One motion law under key (nothing when inactive). */
+static void put_law(FILE *f, const char *key, const struct motion_law *l, int vector, int dim) {
+  if (!l->active) return;
+  fprintf(f, "      %s:\n", key);
+  if (vector) put_vec(f, "        ", "amplitude", l->amplitude, dim);
+  else put_num(f, "        ", "amplitude", l->amplitude[0]);
+  put_num(f, "        ", "period", l->period);
+  put_num(f, "        ", "phase", l->phase);
+  fputs("        ramp:\n", f);
+  put_word(f, "          ", "shape", RAMP_NAMES[l->ramp]);
+  put_num(f, "          ", "time", l->ramp_time);
+}
+
+static void put_motion(FILE *f, const struct wall_motion *m, int dim) {
+  fputs("    motion:\n", f);
+  put_law(f, "translation", &m->translation, 1, dim);
+  put_law(f, "rotation", &m->rotation, 0, dim);
+  if (m->rotation.active) put_vec(f, "        ", "centre", m->centre, dim);
+}
+
 static void put_bodies(FILE *f, const struct case_def *c) {
   put_list_key(f, "phases", c->n_phases);
   for (int i = 0; i < c->n_phases; i++) {
@@ -783,6 +840,7 @@ static void put_bodies(FILE *f, const struct case_def *c) {
     put_shape(f, "  - ", "      ", &c->walls[i].shape, c->dimension);
     put_word(f, "    ", "slip", SLIP_NAMES[c->walls[i].slip]);
     put_word(f, "    ", "fluid_side", SIDE_NAMES[c->walls[i].fluid_side]);
+    if (c->walls[i].moving) put_motion(f, &c->walls[i].motion, c->dimension);
   }
 }
 

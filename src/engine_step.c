@@ -99,6 +99,8 @@ static void damper_coefficients(struct engine *e) {
 
 void engine_assemble(struct engine *e) {
   unsigned f = e->features = case_features(e);
+  e->moving_walls = 0;
+  for (int w = 0; w < e->c->n_walls; w++) e->moving_walls |= e->c->walls[w].moving;
   damper_coefficients(e);
   interface_table(e->c->interface_mode, e->iface);
   e->n_ops = 0;
@@ -158,6 +160,20 @@ void engine_evaluate(struct engine *e, int skip_state_halo) {
  * support at every stage [m]. */
 static double shift_max(const struct engine *e) { return 0.5 * (ENGINE_CELL_SKIN - 1.0) * e->kern.support; }
 
+/* 1 if slot i is a ghost of a moving wall. */
+static int moving_ghost(const struct engine *e, long i) {
+  return e->p.phase[i] == PHASE_WALL && e->c->walls[e->p.wall[i]].moving;
+}
+
+/* |u_w|^2 of moving-wall ghost i at the current stage [m^2/s^2]. */
+static double wall_speed2(const struct engine *e, long i) {
+  double x[3] = {0, 0, 0}, u[3] = {0, 0, 0}, u2 = 0;
+  for (int d = 0; d < e->p.dim; d++) x[d] = e->p.x[d][i];
+  frame_velocity(&e->frames[e->p.wall[i]], e->p.dim, x, u);
+  for (int d = 0; d < e->p.dim; d++) u2 += u[d] * u[d];
+  return u2;
+}
+
 /* Global maxima of the acceleration and of the advection speed |u + du| [m/s^2, m/s], and the
  * minimum density per phase, from the first stage. */
 static void reduce_first_stage(struct engine *e, double *a_max, double *adv_max) {
@@ -167,6 +183,7 @@ static void reduce_first_stage(struct engine *e, double *a_max, double *adv_max)
   for (int ph = 0; ph < np; ph++) e->rho_min[ph] = INFINITY;
   for (long i = 0; i < p->n_owned; i++) {
     int ph = p->phase[i];
+    if (moving_ghost(e, i)) max2[1] = fmax(max2[1], wall_speed2(e, i));
     if (ph == PHASE_WALL) continue;
     double a2 = 0, w2 = 0;
     for (int d = 0; d < p->dim; d++) {
@@ -228,9 +245,32 @@ static void save_state(struct engine *e) {
   }
 }
 
+/* The frames of the moving walls at time t [s]. */
+static void wall_frames(const struct engine *e, double t, struct frame *f) {
+  for (int w = 0; w < e->c->n_walls; w++)
+    if (e->c->walls[w].moving) motion_frame(&e->c->walls[w].motion, t, &f[w]);
+}
+
+/* Carry the owned ghosts of moving walls rigidly from their place at the start of the step
+ * (frames `start`) to time t [s]. */
+static void move_ghosts(struct engine *e, const struct frame *start, double t) {
+  struct parts *p = &e->p;
+  struct frame now[CASE_MAX_WALLS];
+  wall_frames(e, t, now);
+  for (long i = 0; i < p->n_owned; i++) {
+    if (!moving_ghost(e, i)) continue;
+    double x0[3] = {0, 0, 0}, ref[3], x[3];
+    for (int d = 0; d < p->dim; d++) x0[d] = e->w.x0[d][i];
+    frame_reference(&start[p->wall[i]], p->dim, x0, ref);
+    frame_position(&now[p->wall[i]], p->dim, ref, x);
+    for (int d = 0; d < p->dim; d++) p->x[d][i] = x[d];
+  }
+}
+
 /* Accumulate stage s's derivatives with RK4 weight and move owned fluid to the next stage state.
- * Positions advance with u + du (du = 0 without shifting). */
-static void rk4_update(struct engine *e, int s) {
+ * Positions advance with u + du (du = 0 without shifting); moving walls go where their motion
+ * puts them at the next stage's time. */
+static void rk4_update(struct engine *e, int s, const struct frame *start) {
   static const double weight[4] = {1, 2, 2, 1}, next[3] = {0.5, 0.5, 1.0};
   struct parts *p = &e->p;
   struct work *w = &e->w;
@@ -248,6 +288,7 @@ static void rk4_update(struct engine *e, int s) {
     p->rho[i] = w->rho0[i] + step * (s < 3 ? w->drho[i] : w->sum_rho[i]);
     p->p[i] = eos_pressure(&e->c->phases[p->phase[i]], p->rho[i]);
   }
+  if (e->moving_walls) move_ghosts(e, start, e->step_start_time + (s < 3 ? next[s] : 1.0) * e->dt);
 }
 
 /* 1 if owned particle i has moved farther since the start of the step than the cell skin allows:
@@ -263,9 +304,9 @@ static int moved_too_far(const struct engine *e, long i) {
 static long first_non_finite(const struct engine *e, const char **what) {
   const struct parts *p = &e->p;
   for (long i = 0; i < p->n_owned; i++) {
-    if (p->phase[i] == PHASE_WALL) continue;
     *what = "moved farther within one step than the cell skin allows (time step too large)";
-    if (moved_too_far(e, i)) return i;
+    if ((p->phase[i] != PHASE_WALL || moving_ghost(e, i)) && moved_too_far(e, i)) return i;
+    if (p->phase[i] == PHASE_WALL) continue;
     *what = "drho/dt";
     if (!isfinite(e->w.drho[i])) return i;
     for (int d = 0; d < p->dim; d++) {
@@ -289,19 +330,24 @@ static int check_finite(struct engine *e) {
 }
 
 int engine_step(struct engine *e) {
+  static const double stage_offset[4] = {0, 0.5, 0.5, 1.0};
+  struct frame start[CASE_MAX_WALLS];
   engine_work_reserve(e);
   save_state(e);
   e->step_start_time = e->time;
   e->step_start = e->step;
+  wall_frames(e, e->time, start);
   for (int s = 0; s < 4; s++) {
     e->stage = s;
+    e->stage_time = e->time + stage_offset[s] * e->dt;
+    wall_frames(e, e->stage_time, e->frames);
     engine_evaluate(e, s == 0);
     if (check_finite(e)) return 2;
     if (s == 0) {
       e->dt = time_step(e);
       if (!(e->dt > 0) || !isfinite(e->dt)) return 2;
     }
-    rk4_update(e, s);
+    rk4_update(e, s, start);
   }
   e->stage = -1;   /* between steps */
   e->time += e->dt;

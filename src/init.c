@@ -143,11 +143,12 @@ static void add_fluid(const struct case_def *c, int k, const double *x, int64_t 
   p->cell[i] = -1;
   if (p->wall) {
     p->wall[i] = -1;
-    for (int d = 0; d < c->dimension; d++) p->mirror[d][i] = x[d];
+    for (int d = 0; d < c->dimension; d++) p->mirror[d][i] = 0.0;
   }
 }
 
-/* Store a ghost of wall w at x (mirror point across the wall boundary). */
+/* Store a ghost of wall w at x, with the offset 2 (q - x) to its mirror point across the wall
+ * boundary point q nearest to x (fixed in the wall's frame). */
 static void add_ghost(const struct case_def *c, int w, const double *x, int64_t id, struct parts *p) {
   long i = p->n_owned++;
   parts_reserve(p, p->n_owned);
@@ -156,7 +157,7 @@ static void add_ghost(const struct case_def *c, int w, const double *x, int64_t 
   for (int d = 0; d < c->dimension; d++) {
     p->x[d][i] = x[d];
     p->v[d][i] = 0;
-    p->mirror[d][i] = 2 * q[d] - x[d];
+    p->mirror[d][i] = 2 * (q[d] - x[d]);
   }
   p->p[i] = 0;
   p->rho[i] = c->phases[0].rho0;

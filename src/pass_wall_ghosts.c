@@ -1,6 +1,8 @@
-/* pass_wall_ghosts.c — values of the fixed ghost particles (Marrone et al. 2011, CMAME 200):
- * Shepard interpolation of pressure and velocity at the ghost's mirror point r*,
- * p_k = p* + rho* g.(r_k - r*), u_k = mirrored velocity (free slip) or -u* (no slip). */
+/* pass_wall_ghosts.c — values of the ghost particles (Marrone et al. 2011, CMAME 200), fixed in
+ * their wall's frame: Shepard interpolation of pressure and velocity at the ghost's mirror point
+ * r*, p_k = p* + rho* (g - a_w).(r_k - r*), u_k = u* with its normal component relative to the
+ * wall mirrored (free slip) or 2 u_w - u* (no slip); u_w, a_w = 0 for a fixed wall. */
+#include <math.h>
 #include <string.h>
 #include "passes.h"
 
@@ -34,29 +36,54 @@ static int majority_phase(const struct engine *e, const struct shepard *s) {
   return best;
 }
 
-/* Set ghost k from the Shepard sums at its mirror point. */
+/* Velocity [m/s] and acceleration [m/s^2] of wall w at point x (zero for a fixed wall). */
+static void wall_kinematics(const struct engine *e, int w, const double *x, double *u, double *a) {
+  int dim = e->p.dim;
+  for (int d = 0; d < 3; d++) u[d] = a[d] = 0;
+  if (!e->c->walls[w].moving) return;
+  frame_velocity(&e->frames[w], dim, x, u);
+  frame_acceleration(&e->frames[w], dim, x, a);
+}
+
+/* Set ghost k from the Shepard sums at its mirror point xs: pressure with the hydrostatic and
+ * inertial correction, velocity mirrored relative to the wall's. */
 static void ghost_from_shepard(struct engine *e, long k, const double *xs, const struct shepard *s) {
   struct parts *p = &e->p;
-  int dim = p->dim;
-  double u[3] = {0, 0, 0}, n[3], nn = 0, un = 0, pressure = 0;
+  int dim = p->dim, w = p->wall[k];
+  double u[3] = {0, 0, 0}, n[3], nn = 0, un = 0, pressure = 0, mid[3] = {0, 0, 0}, uw[3], aw[3];
+  for (int d = 0; d < dim; d++) mid[d] = 0.5 * (xs[d] + p->x[d][k]);
+  wall_kinematics(e, w, mid, uw, aw);
   if (s->w > 0) {
     double rho_star = s->wrho / s->w;
     pressure = s->wp / s->w;
     for (int d = 0; d < dim; d++) {
       u[d] = s->wu[d] / s->w;
-      pressure += rho_star * e->c->gravity[d] * (p->x[d][k] - xs[d]);
+      pressure += rho_star * (e->c->gravity[d] - aw[d]) * (p->x[d][k] - xs[d]);
     }
   }
   for (int d = 0; d < dim; d++) {
     n[d] = xs[d] - p->x[d][k];
     nn += n[d] * n[d];
   }
-  for (int d = 0; d < dim; d++) un += nn > 0 ? u[d] * n[d] / nn : 0.0;
-  int no_slip = e->c->walls[p->wall[k]].slip == SLIP_NO;
-  for (int d = 0; d < dim; d++) p->v[d][k] = no_slip ? -u[d] : u[d] - 2.0 * un * n[d];
+  for (int d = 0; d < dim; d++) un += nn > 0 ? (u[d] - uw[d]) * n[d] / nn : 0.0;
+  int no_slip = e->c->walls[w].slip == SLIP_NO;
+  for (int d = 0; d < dim; d++) p->v[d][k] = no_slip ? 2.0 * uw[d] - u[d] : u[d] - 2.0 * un * n[d];
   p->p[k] = pressure;
   p->rho[k] = e->c->phases[majority_phase(e, s)].rho0;
   p->m[k] = p->rho[k] * e->vol0;
+}
+
+void wall_mirror_point(const struct engine *e, long k, double *xs) {
+  const struct parts *p = &e->p;
+  double off[3] = {0, 0, 0};
+  for (int d = 0; d < p->dim; d++) off[d] = p->mirror[d][k];
+  if (e->c->walls[p->wall[k]].moving) {   /* the body-frame offset turned with the wall */
+    double c = cos(e->frames[p->wall[k]].theta), s = sin(e->frames[p->wall[k]].theta);
+    double ox = off[0];
+    off[0] = c * ox - s * off[1];
+    off[1] = s * ox + c * off[1];
+  }
+  for (int d = 0; d < 3; d++) xs[d] = d < p->dim ? p->x[d][k] + off[d] : 0.0;
 }
 
 void pass_wall_ghosts(struct engine *e) {
@@ -64,8 +91,8 @@ void pass_wall_ghosts(struct engine *e) {
   long pairs = 0;
   for (long k = 0; k < p->n_owned; k++) {
     if (p->phase[k] != PHASE_WALL) continue;
-    double xs[3] = {0, 0, 0};
-    for (int d = 0; d < p->dim; d++) xs[d] = p->mirror[d][k];
+    double xs[3];
+    wall_mirror_point(e, k, xs);
     struct shepard s;
     shepard_at(e, xs, 0, &s, &pairs);
     ghost_from_shepard(e, k, xs, &s);

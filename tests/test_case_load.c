@@ -333,6 +333,31 @@ static void test_round_trip(void) {
                "case.yaml:7: walls.0.polygon: got a polygon in 3D", "expected box or circle");
 }
 
+/* Wall motion: the laws, their defaults, the round trip and the required keys. */
+static void test_motion(void) {
+  const char *moving = "walls:\n  - box: {min: [0, 0], max: [1, 1]}\n    motion:\n"
+                       "      translation: {amplitude: [0.01, 0], period: 0.83, phase: -1.5707963267948966}\n"
+                       "      rotation: {amplitude: 0.05, period: 2, centre: [0.5, 0.5], ramp: {shape: smooth, time: 3}}\n";
+  struct case_def c;
+  CHECK(load(variant(13, moving), 0, NULL, &c) == 0, "loads: %s", err);
+  const struct wall_motion *m = &c.walls[0].motion;
+  CHECK(c.walls[0].moving && m->translation.active && m->rotation.active, "both laws active");
+  CHECK(m->translation.amplitude[0] == 0.01 && m->translation.period == 0.83 &&
+        m->translation.ramp == RAMP_NONE, "translation law");
+  CHECK(m->rotation.amplitude[0] == 0.05 && m->rotation.ramp == RAMP_SMOOTH && m->rotation.ramp_time == 3 &&
+        m->centre[1] == 0.5 && m->rotation.phase == 0, "rotation law");
+  round_trip(variant(13, moving));
+  CHECK(load(variant(13, "walls: [{box: {min: [0, 0], max: [1, 1]}}]"), 0, NULL, &c) == 0 && !c.walls[0].moving,
+        "a wall without motion is fixed");
+  expect_error(variant(13, "walls: [{box: {min: [0, 0], max: [1, 1]}, motion: {translation: {amplitude: [0.01, 0]}}}]"),
+               0, NULL, "case.yaml:13: walls.0.motion.translation.period: missing required key", "a number > 0");
+  expect_error(variant(13, "walls: [{box: {min: [0, 0], max: [1, 1]}, motion: {rotation: {amplitude: 0.1, period: 1}}}]"),
+               0, NULL, "walls.0.motion.rotation.centre: missing required key", "");
+  expect_error(variant(13, "walls: [{box: {min: [0, 0], max: [1, 1]}, motion: {translation: {amplitude: [1, 0], "
+                           "period: 1, ramp: {shape: cosine, time: 1}}}}]"),
+               0, NULL, "walls.0.motion.translation.ramp.shape: got 'cosine'", "none, linear, smooth");
+}
+
 int main(void) {
   strcpy(dir, "/tmp/test_case_load.XXXXXX");
   if (!mkdtemp(dir)) return 1;
@@ -344,6 +369,7 @@ int main(void) {
   test_malformed();
   test_set();
   test_round_trip();
+  test_motion();
   unlink(path);
   rmdir(dir);
   return check_report("test_case_load");

@@ -1,0 +1,48 @@
+/* motion.h — prescribed rigid motion of a wall: a translation and (2D) a rotation about a centre,
+ * each a sinusoid switched on by a ramp. Tank sloshing cases move their walls with it. */
+#ifndef MPSPH_MOTION_H
+#define MPSPH_MOTION_H
+
+/** How a law is switched on over its ramp time: at once, linearly, or smoothly (a quintic with
+ *  zero first and second derivatives at both ends). */
+enum ramp_kind { RAMP_NONE = 0, RAMP_LINEAR, RAMP_SMOOTH };
+
+/** q(t) = r(t) amplitude sin(omega t + phase), r the ramp (0 -> 1 over ramp_time). For a
+ *  translation the amplitude is a vector [m]; for a rotation amplitude[0] is the angle [rad]. */
+struct motion_law {
+  int active;
+  double amplitude[3];
+  double period;         /* [s]; the angular frequency is 2 pi / period */
+  double phase;          /* [rad] */
+  enum ramp_kind ramp;
+  double ramp_time;      /* [s] */
+};
+
+/** The motion of a wall: x(t) = c + d(t) + R(theta(t)) (X - c) for a body point X at t = 0. */
+struct wall_motion {
+  struct motion_law translation, rotation;
+  double centre[3];      /* rotation centre at t = 0 [m] */
+};
+
+/** The wall's frame at one time: displacement, velocity and acceleration of the centre, angle
+ *  and its rates. */
+struct frame {
+  double d[3], v[3], a[3];             /* [m], [m/s], [m/s^2] */
+  double theta, omega, alpha;          /* [rad], [rad/s], [rad/s^2] */
+  double centre[3];                    /* rotation centre at t = 0 [m] */
+};
+
+/** Evaluate the frame of motion m at time t [s]. A motion with no active law is the identity. */
+void motion_frame(const struct wall_motion *m, double t, struct frame *f);
+
+/** The position at the frame's time of the body point x_ref (its position at t = 0) [m]. */
+void frame_position(const struct frame *f, int dim, const double *x_ref, double *x);
+
+/** The body point (its position at t = 0) of the point now at x: the inverse of frame_position. */
+void frame_reference(const struct frame *f, int dim, const double *x, double *x_ref);
+
+/** Velocity [m/s] and acceleration [m/s^2] of the body point now at x. */
+void frame_velocity(const struct frame *f, int dim, const double *x, double *u);
+void frame_acceleration(const struct frame *f, int dim, const double *x, double *a);
+
+#endif
