@@ -149,7 +149,7 @@ static int restore(struct engine *e, const char *path, const struct snapshot_inf
   reschedule(e, old);
   if (e->rank == 0)
     printf("restart from %s: t = %.9g s, step %ld, %ld particles%s\n", path, e->time, e->step,
-           info->n_particles, x.finished ? "  (the run had finished)" : "");
+           info->n_particles, x.finished ? " (the run had finished)" : "");
   return 0;
 }
 
