@@ -88,6 +88,7 @@ struct case_def {
   double stats_interval;     /* stats.csv interval [s] */
   double probes_interval;    /* probes.csv interval [s] */
   double progress_interval;  /* wall-clock seconds between progress lines */
+  double checkpoint_interval;   /* simulated time between checkpoints [s]; 0 = end of run only */
   double domain_min[3], domain_max[3];   /* [m] */
   int n_phases;
   struct phase phases[CASE_MAX_PHASES];

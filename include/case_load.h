@@ -12,6 +12,11 @@
 int case_load(const char *path, int n_sets, char *const *sets, struct case_def *c,
               char *err, size_t err_len);
 
+/** Like case_load for a case given as YAML text (e.g. the case_yaml of a checkpoint); `source`
+ *  names it in messages. */
+int case_load_text(const char *text, const char *source, struct case_def *c, char *err,
+                   size_t err_len);
+
 /** The resolved case as YAML text (every key, defaults filled). Caller frees. Loading this
  *  text again gives the same case. */
 char *case_to_yaml(const struct case_def *c);

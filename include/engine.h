@@ -6,6 +6,7 @@
 #include <stdio.h>
 #include "case.h"
 #include "interface.h"
+#include "io_hdf5.h"
 #include "kernel.h"
 #include "nlist.h"
 #include "parts.h"
@@ -102,20 +103,31 @@ struct engine {
   int n_snapshots;
   double *snap_times;
   long *snap_counts;
-  double next_output, next_stats, next_probes, wall_start, next_progress;
+  double next_output, next_stats, next_probes, next_checkpoint, wall_start, next_progress;
   long last_snapshot_step, last_stats_step, last_probes_step;   /* -1 before the first */
   FILE *stats, *probes;
+  int restarted;                   /* continues from a checkpoint */
 };
 
-/** Set up the engine for case c: generate particles, partition, distribute, open outputs.
+/** Set up the engine for case c: generate particles (or, with `restart` non-NULL, read them and
+ *  the run state from that checkpoint), partition, distribute, open outputs.
  *  Returns 0, or the exit status (1 bad input, 3 I/O) with a message printed on rank 0. */
-int engine_init(struct engine *e, const struct case_def *c, const char *outdir, MPI_Comm comm);
+int engine_init(struct engine *e, const struct case_def *c, const char *outdir,
+                const char *restart, MPI_Comm comm);
 
-/** Run to t_end. Returns the exit status (0, 2 unstable, 3 I/O). */
+/** Run to t_end (or max_steps), or until a stop signal; write the final outputs and the
+ *  checkpoint. Returns the exit status (0, also after a stop signal; 2 unstable, 3 I/O). */
 int engine_run(struct engine *e);
 
-/** Print (rank 0) the run summary: throughput, time per operation, peak memory. Collective. */
-void engine_report(struct engine *e, double loop_seconds);
+/** 1 when the run has reached time.end or time.max_steps. */
+int engine_finished(const struct engine *e);
+
+/** Global fluid and wall particle counts. Collective. */
+void engine_global_counts(const struct engine *e, double *n_fluid, double *n_wall);
+
+/** Print (rank 0) the summary of the `steps` steps run in loop_seconds [s]: throughput, time
+ *  per operation, peak memory. Collective. */
+void engine_report(struct engine *e, long steps, double loop_seconds);
 
 /** Print (stderr) the step, time, stage, id, phase and position of particle i and what tripped. */
 void engine_report_particle(const struct engine *e, long i, const char *what);
@@ -145,11 +157,16 @@ void engine_assemble(struct engine *e);
 /** Print the active terms and the pipeline (rank 0). */
 void engine_print_pipeline(const struct engine *e);
 
-/** Snapshot, stats and probe output when due (force = write all now). Returns 0 or 3. */
+/** Snapshot, stats and probe output when due (force = write them now), then the checkpoint
+ *  when output.checkpoint_interval is due (never when forced). Returns 0 or 3. */
 int engine_output(struct engine *e, int force);
 
-/** Open the output files (config.yaml, stats.csv, probes.csv). Returns 0, or 1 (with a message)
- *  when the output folder cannot be written: a bad -o is bad input. */
+/** The /header of a snapshot or checkpoint at the given time [s] and step. */
+struct snapshot_info engine_snapshot_info(const struct engine *e, double time, long step);
+
+/** Open the output files (config.yaml, stats.csv, probes.csv). After a restart, stats.csv and
+ *  probes.csv keep their rows up to the checkpoint's step and are appended to. Returns 0, or 1
+ *  (with a message) when the output folder cannot be written: a bad -o is bad input. */
 int engine_open_output(struct engine *e);
 
 /** After an instability: write the failing state (unstable_failing.h5) and the state at the start

@@ -6,6 +6,7 @@ usage: check_snapshot.py OUTDIR
 Opens every OUTDIR/snap_*.h5 and OUTDIR/snapshots.xdmf, checks that every contracted header
 attribute and /particles dataset exists with the right shape and type, that the ids are unique,
 that no temporary file was left behind and that the XDMF index matches the snapshots.
+OUTDIR/checkpoint.h5, when present, is checked like a snapshot plus its /run group.
 Prints one line per file; exits 1 on any problem.
 """
 import argparse
@@ -27,6 +28,9 @@ PARTICLES = {
     "density": (np.float64, False), "pressure": (np.float64, False),
     "mass": (np.float64, False), "phase": (np.int32, False), "id": (np.int64, False),
 }
+RUN_NUMBERS = ("dt", "next_output", "next_stats", "next_probes", "next_checkpoint",
+               "last_snapshot_step", "last_stats_step", "last_probes_step", "wall_seconds",
+               "no_free_surface", "finished")
 XDMF_TYPES = {np.dtype(np.float64): ("Float", "8"), np.dtype(np.int32): ("Int", "4"),
               np.dtype(np.int64): ("Int", "8")}
 
@@ -92,6 +96,23 @@ def check_h5(path):
     except Exception as e:  # any unreadable content is a finding, not a crash
         return [f"cannot read: {e}"], {}, {}
     return problems, attrs, shapes
+
+
+def check_checkpoint(path):
+    """checkpoint.h5: a snapshot plus the /run group (run state and snapshot series)."""
+    problems, attrs, _ = check_h5(path)
+    try:
+        with h5py.File(path, "r") as f:
+            run = f.get("run")
+            if run is None:
+                return problems + ["no /run group"], attrs
+            problems += [f"/run has no attribute {k}" for k in RUN_NUMBERS if k not in run.attrs]
+            times, counts = run.get("snapshot_times"), run.get("snapshot_particles")
+            if times is None or counts is None or times.shape != counts.shape:
+                problems.append("/run/snapshot_times and snapshot_particles missing or unequal")
+    except Exception as e:  # any unreadable content is a finding, not a crash
+        problems.append(f"cannot read: {e}")
+    return problems, attrs
 
 
 def check_item(item, outdir, snaps, where, problems):
@@ -193,6 +214,10 @@ def main():
     ok &= report("series", series, f"  {len(snaps)} snapshots")
     if snaps:
         ok &= report("snapshots.xdmf", check_xdmf(outdir, snaps), f"  {len(snaps)} grids")
+    checkpoint = os.path.join(outdir, "checkpoint.h5")
+    if os.path.exists(checkpoint):
+        problems, a = check_checkpoint(checkpoint)
+        ok &= report("checkpoint.h5", problems, f"  time={a.get('time')} step={a.get('step')}")
     return 0 if ok else 1
 
 

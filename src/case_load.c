@@ -38,7 +38,7 @@ static const char *const ROOT_KEYS[] = {"name", "description", "dimension", "sch
 static const char *const RESOLUTION_KEYS[] = {"dx", "h_over_dx", NULL};
 static const char *const TIME_KEYS[] = {"end", "cfl", "max_steps", NULL};
 static const char *const OUTPUT_KEYS[] = {"interval", "stats_interval", "probes_interval",
-                                          "progress_interval", NULL};
+                                          "progress_interval", "checkpoint_interval", NULL};
 static const char *const BOX_KEYS[] = {"min", "max", NULL};
 static const char *const CIRCLE_KEYS[] = {"centre", "radius", "inner_radius", NULL};
 static const char *const PHASE_KEYS[] = {"name", "rho0", "c0", "gamma", "p_background",
@@ -591,7 +591,8 @@ static int read_run(const struct map *root, struct case_def *c) {
          num(&o, "interval", &R_NONNEGATIVE, 0, &c->output_interval) ||
          num(&o, "stats_interval", &R_POSITIVE, c->t_end / 100, &c->stats_interval) ||
          num(&o, "probes_interval", &R_POSITIVE, c->stats_interval, &c->probes_interval) ||
-         num(&o, "progress_interval", &R_POSITIVE, 10, &c->progress_interval);
+         num(&o, "progress_interval", &R_POSITIVE, 10, &c->progress_interval) ||
+         num(&o, "checkpoint_interval", &R_NONNEGATIVE, 0, &c->checkpoint_interval);
 }
 
 static int read_contents(const struct map *root, struct case_def *c) {
@@ -665,20 +666,36 @@ static int read_case(const struct ynode *root, struct case_def *c, char *err, si
          read_contents(&m, c) || read_options(&m, c);
 }
 
+/* Clear c and record its source; 1 with a message when the name does not fit. */
+static int start_case(const char *source, struct case_def *c, char *err, size_t err_len) {
+  memset(c, 0, sizeof *c);
+  if (strlen(source) >= sizeof c->source_file) {
+    if (err_len) snprintf(err, err_len, "%s: path too long, expected at most %zu characters",
+                          source, sizeof c->source_file - 1);
+    return 1;
+  }
+  snprintf(c->source_file, sizeof c->source_file, "%s", source);
+  return 0;
+}
+
 /* Load, override, validate and resolve a case file into c. */
 int case_load(const char *path, int n_sets, char *const *sets, struct case_def *c, char *err,
               size_t err_len) {
-  memset(c, 0, sizeof *c);
-  if (strlen(path) >= sizeof c->source_file) {
-    if (err_len) snprintf(err, err_len, "%s: path too long, expected at most %zu characters",
-                          path, sizeof c->source_file - 1);
-    return 1;
-  }
-  snprintf(c->source_file, sizeof c->source_file, "%s", path);
+  if (start_case(path, c, err, err_len)) return 1;
   struct ynode *root = ytree_load(path, err, err_len);
   int rc = root ? 0 : 1;
   for (int i = 0; rc == 0 && i < n_sets; i++) rc = ytree_set(root, sets[i], i + 1, err, err_len);
   if (rc == 0) rc = read_case(root, c, err, err_len);
+  ytree_free(root);
+  return rc;
+}
+
+/* Validate and resolve the case given as YAML text (named source in messages) into c. */
+int case_load_text(const char *text, const char *source, struct case_def *c, char *err,
+                   size_t err_len) {
+  if (start_case(source, c, err, err_len)) return 1;
+  struct ynode *root = ytree_parse(text, source, 0, err, err_len);
+  int rc = root ? read_case(root, c, err, err_len) : 1;
   ytree_free(root);
   return rc;
 }
@@ -786,6 +803,7 @@ static void put_head(FILE *f, const struct case_def *c) {
   put_num(f, "  ", "stats_interval", c->stats_interval);
   put_num(f, "  ", "probes_interval", c->probes_interval);
   put_num(f, "  ", "progress_interval", c->progress_interval);
+  put_num(f, "  ", "checkpoint_interval", c->checkpoint_interval);
   fputs("domain:\n", f);
   put_vec(f, "  ", "min", c->domain_min, dim);
   put_vec(f, "  ", "max", c->domain_max, dim);

@@ -4,9 +4,11 @@
 #include <stdlib.h>
 #include <string.h>
 #include "engine.h"
+#include "engine_checkpoint.h"
 #include "init.h"
 #include "partition.h"
 #include "redistribute.h"
+#include "signal_stop.h"
 
 #define BALANCE_CHECK_EVERY 100 /* steps between load-balance checks (the timing window) */
 #define REPARTITION_MIN_GAP 500 /* steps between imbalance-triggered re-partitions */
@@ -166,8 +168,8 @@ static int setup_space(struct engine *e) {
   return 0;
 }
 
-/* Generate, locate and distribute the initial particles. Returns 0 or 1. */
-static int setup_particles(struct engine *e) {
+/* Generate this rank's share of the initial particles. Returns 0 or 1. */
+static int generate_particles(struct engine *e) {
   char err[1024];
   struct init_counts counts;
   parts_init(&e->p, e->c->dimension, 1024, e->c->n_walls > 0);
@@ -175,29 +177,44 @@ static int setup_particles(struct engine *e) {
     report(e, err);
     return 1;
   }
-  if (space_assign_cells(&e->space, &e->p, 0, e->p.n_owned) >= 0) {
+  return 0;
+}
+
+/* Locate the particles in their cells and partition the cells among the ranks. Returns 0 or 1. */
+static int distribute_particles(struct engine *e) {
+  long outside = space_assign_cells(&e->space, &e->p, 0, e->p.n_owned);
+  int any = outside >= 0;
+  MPI_Allreduce(MPI_IN_PLACE, &any, 1, MPI_INT, MPI_MAX, e->comm);
+  if (any) {
     report(e, "a particle lies outside the domain at start-up");
     return 1;
   }
+  double n_fluid, n_wall;
+  engine_global_counts(e, &n_fluid, &n_wall);
   if (e->rank == 0)
-    printf("particles: %ld fluid, %ld wall; grid %ld x %ld x %ld cells, halo %d layers, %d ranks\n",
-           counts.n_fluid, counts.n_wall, e->space.grid.n[0], e->space.grid.n[1], e->space.grid.n[2],
+    printf("particles: %.0f fluid, %.0f wall; grid %ld x %ld x %ld cells, halo %d layers, %d ranks\n",
+           n_fluid, n_wall, e->space.grid.n[0], e->space.grid.n[1], e->space.grid.n[2],
            e->space.halo_layers, e->n_ranks);
   return engine_repartition(e);
 }
 
-int engine_init(struct engine *e, const struct case_def *c, const char *outdir, MPI_Comm comm) {
+int engine_init(struct engine *e, const struct case_def *c, const char *outdir,
+                const char *restart, MPI_Comm comm) {
   memset(e, 0, sizeof(*e));
   e->c = c;
   e->comm = comm;
   e->outdir = outdir;
+  e->restarted = restart != NULL;
   MPI_Comm_rank(comm, &e->rank);
   MPI_Comm_size(comm, &e->n_ranks);
   e->wall_start = MPI_Wtime();
   e->last_snapshot_step = e->last_stats_step = e->last_probes_step = -1;
+  e->next_checkpoint = c->checkpoint_interval;
   if (setup_space(e)) return 1;
+  int status = restart ? engine_checkpoint_read(e, restart) : generate_particles(e);
+  if (status) return status;
   engine_assemble(e);
-  if (setup_particles(e)) return 1;
+  if (distribute_particles(e)) return 1;
   e->n_repartitions = 0;
   engine_print_pipeline(e);
   return engine_open_output(e);
@@ -241,25 +258,52 @@ static void progress(struct engine *e) {
   e->next_progress = now + e->c->progress_interval;
 }
 
+int engine_finished(const struct engine *e) {
+  return e->time >= e->c->t_end || (e->c->max_steps && e->step >= e->c->max_steps);
+}
+
+/* Rank 0: the run ends here because of a stop signal, or had nothing left to do. */
+static void report_end(const struct engine *e, int signo, long steps) {
+  if (e->rank) return;
+  if (signo)
+    printf("stopped by %s at step %ld, t = %.9g s: the checkpoint is %s/checkpoint.h5; continue "
+           "with the same command and --restart\n", signal_stop_name(signo), e->step, e->time,
+           e->outdir);
+  else if (e->restarted && steps == 0)
+    printf("nothing to run: the checkpoint is at t = %.9g s, step %ld, and the case ends at "
+           "time.end = %g s, time.max_steps = %ld; raise them to continue\n", e->time, e->step,
+           e->c->t_end, e->c->max_steps);
+}
+
+/* Advance one step with everything that follows it: migration, load balance, outputs. */
+static int step_and_output(struct engine *e) {
+  int status = engine_step(e);
+  if (!status && e->step == 1) free_surface_auto(e);
+  if (!status) status = engine_rebuild(e);
+  if (!status) status = balance(e);
+  if (!status) status = engine_output(e, 0);
+  progress(e);
+  return status;
+}
+
 int engine_run(struct engine *e) {
-  int status = engine_output(e, 1);
+  int status = e->restarted ? 0 : engine_output(e, 1), signo = 0;
+  long first_step = e->step;
   double loop_start = MPI_Wtime();
   e->next_progress = loop_start + e->c->progress_interval;
-  while (!status && e->time < e->c->t_end && (!e->c->max_steps || e->step < e->c->max_steps)) {
-    status = engine_step(e);
-    if (!status && e->step == 1) free_surface_auto(e);
-    if (!status) status = engine_rebuild(e);
-    if (!status) status = balance(e);
-    if (!status) status = engine_output(e, 0);
-    progress(e);
+  while (!status && !signo && !engine_finished(e)) {
+    status = step_and_output(e);
+    if (!status) signo = signal_stop_agreed(e->comm);
   }
   if (status == 2) {
     report(e, "run stopped: the state became unstable; writing the failing and the last good state");
     if (engine_write_failure(e)) status = 3;
   }
-  if (status != 2 && status != 3) status = engine_output(e, 1);
+  if (!status && !signo) status = engine_output(e, 1);
+  if (!status) status = engine_checkpoint_write(e);
+  if (!status) report_end(e, signo, e->step - first_step);
   engine_close_output(e);
-  engine_report(e, MPI_Wtime() - loop_start);
+  engine_report(e, e->step - first_step, MPI_Wtime() - loop_start);
   return status;
 }
 

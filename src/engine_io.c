@@ -1,11 +1,14 @@
-/* engine_io.c — output folder: config.yaml, snapshots + XDMF, stats.csv, probes.csv. */
+/* engine_io.c — output folder: config.yaml, snapshots + XDMF, stats.csv, probes.csv, and the
+ * periodic checkpoint. */
 #include <errno.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <unistd.h>
 #include "case_load.h"
 #include "engine.h"
+#include "engine_checkpoint.h"
 #include "eos.h"
 #include "io_hdf5.h"
 #include "passes.h"
@@ -35,10 +38,30 @@ static int write_text_file(const char *dir, const char *name, const char *text) 
   return ok ? rename(tmp, path) : -1;
 }
 
-static FILE *open_csv(const char *dir, const char *name) {
+/* Drop the rows of the CSV file at path whose step (first column) is above last_step, keeping
+ * the header, through a temporary file. Returns 0 or -1. */
+static int trim_csv(const char *path, long last_step) {
+  char tmp[1300], *line = NULL;
+  size_t cap = 0;
+  snprintf(tmp, sizeof(tmp), "%s.tmp", path);
+  FILE *in = fopen(path, "r"), *out = in ? fopen(tmp, "w") : NULL;
+  int ok = out != NULL;
+  for (long row = 0; ok && getline(&line, &cap, in) > 0; row++)
+    if (row == 0 || strtol(line, NULL, 10) <= last_step) ok = fputs(line, out) >= 0;
+  free(line);
+  if (in) fclose(in);
+  if (out) ok &= fclose(out) == 0;
+  return ok ? rename(tmp, path) : -1;
+}
+
+/* Open dir/name for rows. A fresh run truncates it; a restart keeps the rows up to its step and
+ * appends. *fresh = 1 when the file is new (the caller writes the header). NULL on failure. */
+static FILE *open_csv(const struct engine *e, const char *name, int *fresh) {
   char path[1200];
-  snprintf(path, sizeof(path), "%s/%s", dir, name);
-  return fopen(path, "w");
+  snprintf(path, sizeof(path), "%s/%s", e->outdir, name);
+  *fresh = !e->restarted || access(path, F_OK) != 0;
+  if (*fresh) return fopen(path, "w");
+  return trim_csv(path, e->step) ? NULL : fopen(path, "a");
 }
 
 static void stats_header(const struct engine *e) {
@@ -60,6 +83,21 @@ static void probes_header(const struct engine *e) {
   fflush(e->probes);
 }
 
+/* Rank 0: open stats.csv and probes.csv (if the case has probes), headers on new files.
+ * Returns 0 or 1 with a message. */
+static int open_tables(struct engine *e) {
+  int fresh_stats, fresh_probes = 0;
+  e->stats = open_csv(e, "stats.csv", &fresh_stats);
+  if (e->stats && e->c->n_probes) e->probes = open_csv(e, "probes.csv", &fresh_probes);
+  if (!e->stats || (e->c->n_probes && !e->probes)) {
+    fprintf(stderr, "mpsph: cannot open stats.csv or probes.csv in '%s': %s\n", e->outdir, strerror(errno));
+    return 1;
+  }
+  if (fresh_stats) stats_header(e);
+  if (fresh_probes) probes_header(e);
+  return 0;
+}
+
 int engine_open_output(struct engine *e) {
   e->case_yaml = case_to_yaml(e->c);
   int status = 0;
@@ -68,12 +106,7 @@ int engine_open_output(struct engine *e) {
       fprintf(stderr, "mpsph: cannot write to the output folder '%s': %s\n", e->outdir, strerror(errno));
       status = 1;
     } else {
-      e->stats = open_csv(e->outdir, "stats.csv");
-      if (e->c->n_probes) e->probes = open_csv(e->outdir, "probes.csv");
-      status = !e->stats || (e->c->n_probes && !e->probes) ? 1 : 0;
-      if (status) fprintf(stderr, "mpsph: cannot create stats.csv or probes.csv in '%s': %s\n", e->outdir, strerror(errno));
-      if (!status) stats_header(e);
-      if (!status && e->probes) probes_header(e);
+      status = open_tables(e);
     }
   }
   MPI_Bcast(&status, 1, MPI_INT, 0, e->comm);
@@ -101,11 +134,16 @@ static void swap_step_start(struct engine *e) {
   }
 }
 
+struct snapshot_info engine_snapshot_info(const struct engine *e, double time, long step) {
+  return (struct snapshot_info){.time = time, .step = step, .dimension = e->c->dimension,
+                                .case_yaml = e->case_yaml, .code_version = MPSPH_VERSION};
+}
+
 /* One snapshot file named `name` in the output folder at the given time and step. */
 static int write_named(struct engine *e, const char *name, double time, long step) {
   char path[1200], err[512];
   snprintf(path, sizeof(path), "%s/%s", e->outdir, name);
-  struct snapshot_info info = {time, step, e->c->dimension, e->case_yaml, MPSPH_VERSION};
+  struct snapshot_info info = engine_snapshot_info(e, time, step);
   int status = hdf5_write_snapshot(path, &info, &e->p, e->comm, err, sizeof(err));
   if (status && e->rank == 0) fprintf(stderr, "mpsph: %s\n", err);
   if (!status && e->rank == 0) printf("wrote %s (t = %.9g s, step %ld)\n", path, time, step);
@@ -123,7 +161,7 @@ int engine_write_failure(struct engine *e) {
 static int write_snapshot(struct engine *e) {
   char path[1200], err[512];
   snprintf(path, sizeof(path), "%s/snap_%05d.h5", e->outdir, e->n_snapshots);
-  struct snapshot_info info = {e->time, e->step, e->c->dimension, e->case_yaml, MPSPH_VERSION};
+  struct snapshot_info info = engine_snapshot_info(e, e->time, e->step);
   double t0 = MPI_Wtime();
   int status = hdf5_write_snapshot(path, &info, &e->p, e->comm, err, sizeof(err));
   long n_total, n = e->p.n_owned;
@@ -226,5 +264,10 @@ int engine_output(struct engine *e, int force) {
     e->last_probes_step = e->step;
     write_probes(e);
   }
+  /* last, so that it holds the schedule advanced by this step's outputs; the end of the run
+   * writes its own */
+  if (!force && c->checkpoint_interval > 0 &&
+      due(e->time, c->checkpoint_interval, &e->next_checkpoint, 0) && !engine_finished(e))
+    return engine_checkpoint_write(e);
   return 0;
 }

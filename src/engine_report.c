@@ -9,8 +9,7 @@ static double peak_rss_bytes(void) {
   return (double)ru.ru_maxrss * 1024.0;
 }
 
-/* Global fluid and wall particle counts. */
-static void global_counts(const struct engine *e, double *n_fluid, double *n_wall) {
+void engine_global_counts(const struct engine *e, double *n_fluid, double *n_wall) {
   double local[2] = {0, 0}, total[2];
   for (long i = 0; i < e->p.n_owned; i++) local[e->p.phase[i] == PHASE_WALL]++;
   MPI_Allreduce(local, total, 2, MPI_DOUBLE, MPI_SUM, e->comm);
@@ -23,15 +22,15 @@ static double max_over_ranks(const struct engine *e, double x) {
   return x;
 }
 
-void engine_report(struct engine *e, double loop_seconds) {
+void engine_report(struct engine *e, long steps, double loop_seconds) {
   double n_fluid, n_wall, rss = peak_rss_bytes(), rss_sum, rss_max = max_over_ranks(e, rss);
-  global_counts(e, &n_fluid, &n_wall);
+  engine_global_counts(e, &n_fluid, &n_wall);
   MPI_Allreduce(&rss, &rss_sum, 1, MPI_DOUBLE, MPI_SUM, e->comm);
   double op_time[ENGINE_MAX_OPS], migrate = max_over_ranks(e, e->t_migrate);
   for (int k = 0; k < e->n_ops; k++) op_time[k] = max_over_ranks(e, e->ops[k].seconds);
   if (e->rank) return;
-  double rate = e->step > 0 && loop_seconds > 0 ? n_fluid * (double)e->step / loop_seconds : 0;
-  printf("summary: %ld steps in %.2f s on %d ranks; %.0f fluid + %.0f wall particles\n", e->step,
+  double rate = steps > 0 && loop_seconds > 0 ? n_fluid * (double)steps / loop_seconds : 0;
+  printf("summary: %ld steps in %.2f s on %d ranks; %.0f fluid + %.0f wall particles\n", steps,
          loop_seconds, e->n_ranks, n_fluid, n_wall);
   printf("  throughput: %.4g fluid particle-steps/s in total, %.4g per rank\n", rate, rate / e->n_ranks);
   for (int k = 0; k < e->n_ops; k++)

@@ -7,22 +7,27 @@
 #include "engine.h"
 #include "init.h"
 #include "kernel.h"
+#include "signal_stop.h"
 
 #define MAX_SETS 256
 
 static const char *usage =
     "usage:\n"
-    "  mpirun -n N mpsph run CASE.yaml [-o OUTDIR] [--set key.path=value ...]\n"
+    "  mpirun -n N mpsph run CASE.yaml [-o OUTDIR] [--set key.path=value ...] [--restart [FILE]]\n"
     "  mpsph check CASE.yaml [--set key.path=value ...]\n"
     "  mpsph --help | --version\n"
     "\n"
     "run    runs the case; output goes to OUTDIR (default runs/<case name>)\n"
     "check  validates the case, prints the resolved case and the particle counts\n"
     "--set  overrides any key of the case file, e.g. --set resolution.dx=0.005 --set time.end=0.5\n"
+    "--restart  continues from FILE (default OUTDIR/checkpoint.h5), on any number of ranks\n"
+    "SIGTERM, SIGINT or SIGUSR1 stop a run cleanly: it writes OUTDIR/checkpoint.h5 and exits 0\n"
     "exit status: 0 success, 1 bad input, 2 unstable run, 3 I/O failure\n";
 
 struct args {
   const char *command, *case_path, *outdir;
+  int restart;                /* --restart given */
+  const char *restart_path;   /* its FILE, or NULL for OUTDIR/checkpoint.h5 */
   int n_sets;
   char *sets[MAX_SETS];
 };
@@ -35,14 +40,18 @@ static int parse_args(int argc, char **argv, struct args *a, char *err, size_t l
   for (int k = 2; k < argc; k++) {
     if (!strcmp(argv[k], "-o") && k + 1 < argc) a->outdir = argv[++k];
     else if (!strcmp(argv[k], "--set") && k + 1 < argc && a->n_sets < MAX_SETS) a->sets[a->n_sets++] = argv[++k];
-    else if (!strcmp(argv[k], "--restart"))
-      return snprintf(err, len, "--restart: checkpoints are not written by this version yet"), 1;
+    else if (!strcmp(argv[k], "--restart")) {
+      a->restart = 1;   /* FILE follows when the case file is already named */
+      if (a->case_path && k + 1 < argc && argv[k + 1][0] != '-') a->restart_path = argv[++k];
+    }
     else if (argv[k][0] != '-' && !a->case_path) a->case_path = argv[k];
     else return snprintf(err, len, "unexpected argument '%s'\n%s", argv[k], usage), 1;
   }
   if (strcmp(a->command, "run") && strcmp(a->command, "check"))
     return snprintf(err, len, "unknown command '%s'\n%s", a->command, usage), 1;
   if (!a->case_path) return snprintf(err, len, "%s needs a case file\n%s", a->command, usage), 1;
+  if (a->restart && strcmp(a->command, "run"))
+    return snprintf(err, len, "--restart: only with run\n%s", usage), 1;
   return 0;
 }
 
@@ -77,11 +86,14 @@ static int supported(const struct case_def *c, char *err, size_t len) {
   return 1;
 }
 
-static int run_case(const struct case_def *c, const char *outdir) {
-  char defdir[CASE_MAX_NAME + 8];
+static int run_case(const struct case_def *c, const struct args *a) {
+  char defdir[CASE_MAX_NAME + 8], restart[1200];
   snprintf(defdir, sizeof(defdir), "runs/%s", c->name);
+  const char *outdir = a->outdir ? a->outdir : defdir;
+  snprintf(restart, sizeof(restart), "%s/checkpoint.h5", outdir);
   struct engine e;
-  int status = engine_init(&e, c, outdir ? outdir : defdir, MPI_COMM_WORLD);
+  int status = engine_init(&e, c, outdir, !a->restart ? NULL : a->restart_path ? a->restart_path : restart,
+                           MPI_COMM_WORLD);
   if (!status) status = engine_run(&e);
   engine_free(&e);
   return status;
@@ -92,6 +104,7 @@ int main(int argc, char **argv) {
   if (argc == 2 && !strcmp(argv[1], "--version")) return printf("mpsph %s\n", MPSPH_VERSION), 0;
   MPI_Init(&argc, &argv);
   setvbuf(stdout, NULL, _IOLBF, 0);   /* progress shows up in batch logs as it is printed */
+  signal_stop_install();
   int rank, status;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   struct args a;
@@ -101,7 +114,7 @@ int main(int argc, char **argv) {
   if (!status) status = case_load(a.case_path, a.n_sets, a.sets, &c, err, sizeof(err));
   if (!status) status = supported(&c, err, sizeof(err));
   if (status && rank == 0) fprintf(stderr, "mpsph: %s\n", err);
-  if (!status) status = !strcmp(a.command, "check") ? (rank == 0 ? check_case(&c) : 0) : run_case(&c, a.outdir);
+  if (!status) status = !strcmp(a.command, "check") ? (rank == 0 ? check_case(&c) : 0) : run_case(&c, &a);
   MPI_Finalize();
   return status;
 }

@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Compare the snapshots of two run folders bitwise after sorting particles by id.
 
-Usage: compare_snapshots.py DIR_A DIR_B
+Usage: compare_snapshots.py DIR_A DIR_B     every snap_*.h5 of A with the same-named one of B
+       compare_snapshots.py FILE_A FILE_B   two snapshots (or checkpoints)
 Exit 0 when every snapshot has the same time, step and bitwise-identical particle data.
 """
 import glob
@@ -22,9 +23,13 @@ def load(path):
     return head, data
 
 
+def snapshots(path):
+    """The snapshots of a run folder, or the file itself."""
+    return [path] if os.path.isfile(path) else sorted(glob.glob(os.path.join(path, "snap_*.h5")))
+
+
 def main(a, b):
-    snaps_a = sorted(glob.glob(os.path.join(a, "snap_*.h5")))
-    snaps_b = sorted(glob.glob(os.path.join(b, "snap_*.h5")))
+    snaps_a, snaps_b = snapshots(a), snapshots(b)
     if not snaps_a or len(snaps_a) != len(snaps_b):
         print(f"snapshot counts differ or are zero: {len(snaps_a)} vs {len(snaps_b)}")
         return 1

@@ -1,5 +1,6 @@
 /* test_io_hdf5.c — collective snapshots written by every rank (one rank owns nothing), read back
- * on rank 0 with the serial HDF5 API and checked value by value; safe replacement; XDMF index.
+ * on rank 0 with the serial HDF5 API and checked value by value; safe replacement; XDMF index;
+ * checkpoints written and read back collectively (a block of rows per rank), also empty ones.
  * Usage: mpirun -n 1|2|3 test_io_hdf5 [KEEPDIR]   (with KEEPDIR the output folders are kept:
  * KEEPDIR (2D, two snapshots), KEEPDIR/3d and KEEPDIR/empty, each with snapshots.xdmf). */
 #include "check.h"
@@ -228,6 +229,77 @@ static void test_replace(const char *path, int dim, int old_salt, const char *ya
   if (rank == 0) CHECK(access(tmp, F_OK) != 0, "%s left behind", tmp);
 }
 
+/* Expected mirror component k and wall index of global row g (walls: phase -1). */
+static double mirror_of(int k, long g) { return -0.5 * g - k; }
+static int wall_of(long g) { return phase_of(g) == -1 ? (int)(g % 5) : -1; }
+
+/* Write a checkpoint of snapshot salt with ghost geometry, run numbers and a snapshot series;
+ * read it back on every rank and check this rank's block of rows and the run state. */
+static void test_checkpoint(const char *path, int salt, int empty, const char *yaml) {
+  char err[512] = "";
+  int rank, size;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  MPI_Comm_size(MPI_COMM_WORLD, &size);
+  struct parts p;
+  fill_parts(&p, 2, salt, empty, MPI_COMM_WORLD);
+  long first = count_below(rank, empty), total = count_below(size, empty);
+  p.wall = calloc(p.capacity + 1, sizeof(int));   /* non-NULL: the particles have walls */
+  for (int k = 0; k < 2; k++) p.mirror[k] = calloc(p.capacity + 1, sizeof(double));
+  for (long i = 0; i < p.n_owned; i++) {
+    p.wall[i] = wall_of(first + i);
+    for (int k = 0; k < 2; k++) p.mirror[k][i] = mirror_of(k, first + i);
+  }
+  double dt = 1e-4 * salt, times[3] = {0, 0.5, 1.5}, dt_read = -1;
+  long steps = 7, steps_read = -1, counts[3] = {total, total, total};
+  struct hdf5_number numbers[] = {{"dt", &dt, NULL}, {"steps", NULL, &steps}};
+  struct checkpoint_extra x = {2, numbers, empty ? 0 : 3, times, counts};
+  struct snapshot_info info = {.time = 0.25 * salt, .step = 10L * salt, .dimension = 2,
+                               .case_yaml = yaml, .code_version = VERSION};
+  CHECK(hdf5_write_checkpoint(path, &info, &p, &x, MPI_COMM_WORLD, err, sizeof err) == 0,
+        "write checkpoint %s: %s", path, err);
+  free_parts(&p);
+  free(p.wall), free(p.mirror[0]), free(p.mirror[1]);
+
+  struct snapshot_info got;
+  CHECK(hdf5_read_header(path, &got, MPI_COMM_WORLD, err, sizeof err) == 0 && got.step == 10L * salt &&
+            got.n_particles == total && strcmp(got.case_yaml, yaml) == 0, "read header: %s", err);
+  hdf5_info_free(&got);
+  struct hdf5_number back[] = {{"dt", &dt_read, NULL}, {"steps", NULL, &steps_read}};
+  struct checkpoint_extra y = {2, back, 0, NULL, NULL};
+  parts_init(&p, 2, 1, 1);
+  CHECK(hdf5_read_checkpoint(path, &p, &y, MPI_COMM_WORLD, err, sizeof err) == 0, "read %s: %s", path, err);
+  long lo = total * rank / size, bad = 0;
+  CHECK(p.n_owned == total * (rank + 1) / size - lo, "rank %d: %ld rows", rank, p.n_owned);
+  for (long i = 0; i < p.n_owned; i++) {
+    long g = lo + i;
+    for (int k = 0; k < 2; k++)
+      bad += p.x[k][i] != value('x', k, g, salt) || p.v[k][i] != value('v', k, g, salt) ||
+             p.mirror[k][i] != mirror_of(k, g);
+    bad += p.rho[i] != value('r', 0, g, salt) || p.p[i] != value('p', 0, g, salt) ||
+           p.m[i] != value('m', 0, g, salt) || p.phase[i] != phase_of(g) || p.id[i] != id_of(g) ||
+           p.wall[i] != wall_of(g);
+  }
+  CHECK(bad == 0, "checkpoint rows: %ld wrong values", bad);
+  CHECK(dt_read == dt && steps_read == steps && y.n_snapshots == x.n_snapshots &&
+            (empty || (y.snapshot_times[2] == 1.5 && y.snapshot_counts[1] == total)),
+        "run state: dt %g steps %ld, %d snapshots", dt_read, steps_read, y.n_snapshots);
+  free(y.snapshot_times), free(y.snapshot_counts);
+  parts_free(&p);
+}
+
+/* A snapshot is not a checkpoint: reading it as one fails on every rank with a reason. */
+static void test_not_checkpoint(const char *path) {
+  char err[512] = "";
+  double dt;
+  struct hdf5_number numbers[] = {{"dt", &dt, NULL}};
+  struct checkpoint_extra y = {1, numbers, 0, NULL, NULL};
+  struct parts p;
+  parts_init(&p, 2, 1, 0);
+  CHECK(hdf5_read_checkpoint(path, &p, &y, MPI_COMM_WORLD, err, sizeof err) == 3 &&
+            strstr(err, "not a checkpoint"), "snapshot read as a checkpoint: '%s'", err);
+  parts_free(&p);
+}
+
 /* Rank 0: write dir/snapshots.xdmf for the snapshots with the given salts, and check it. */
 static void write_xdmf(const char *dir, int dim, int empty, int nsnap, const int *salts,
                        int nranks) {
@@ -269,7 +341,8 @@ static void make_dirs(int argc, char **argv, char *dir, size_t len) {
 
 /* Rank 0: remove everything the test wrote (when no KEEPDIR was given). */
 static void remove_dirs(const char *dir) {
-  static const char *const files[] = {"snap_00000.h5", "snap_00001.h5", "snapshots.xdmf"};
+  static const char *const files[] = {"snap_00000.h5", "snap_00001.h5", "snapshots.xdmf",
+                                      "checkpoint.h5"};
   char path[4300];
   for (int i = (int)(sizeof SUBDIRS / sizeof SUBDIRS[0]) - 1; i >= 0; i--) {
     for (size_t j = 0; j < sizeof files / sizeof files[0]; j++) {
@@ -302,6 +375,12 @@ int main(int argc, char **argv) {
   test_folder(sub, 2, 1, 1, yaml, nranks);
   if (rank == 0) write_xdmf(sub, 2, 1, 1, salt0, nranks);
   if (rank == 0) test_xdmf_error(dir);
+  snprintf(sub, sizeof sub, "%s/checkpoint.h5", dir);
+  test_checkpoint(sub, 3, 0, yaml);
+  snprintf(sub, sizeof sub, "%s/empty/checkpoint.h5", dir);
+  test_checkpoint(sub, 1, 1, yaml);
+  snprintf(sub, sizeof sub, "%s/snap_00000.h5", dir);
+  test_not_checkpoint(sub);
 
   MPI_Barrier(MPI_COMM_WORLD);
   if (rank == 0 && argc < 2) remove_dirs(dir);

@@ -124,7 +124,7 @@ int main(int argc, char **argv) {
   static struct case_def c;
   struct engine e;
   CHECK(case_load(path, 0, NULL, &c, err, sizeof err) == 0, "case: %s", err);
-  CHECK(engine_init(&e, &c, out, MPI_COMM_WORLD) == 0, "engine_init");
+  CHECK(engine_init(&e, &c, out, NULL, MPI_COMM_WORLD) == 0, "engine_init");
   for (int noisy = 0; noisy <= 1; noisy++) {
     set_fields(&e, noisy);
     CHECK(engine_rebuild(&e) == 0, "rebuild");
