@@ -35,13 +35,13 @@ static const char *const ROOT_KEYS[] = {"name", "description", "dimension", "sch
                                         "phases", "fluids", "walls", "physics", "initial",
                                         "probes", "parallel", NULL};
 static const char *const RESOLUTION_KEYS[] = {"dx", "h_over_dx", NULL};
-static const char *const TIME_KEYS[] = {"end", "cfl", "max_steps", NULL};
+static const char *const TIME_KEYS[] = {"end", "cfl", "max_steps", "dt_min", NULL};
 static const char *const OUTPUT_KEYS[] = {"interval", "stats_interval", "probes_interval",
                                           "progress_interval", NULL};
 static const char *const BOX_KEYS[] = {"min", "max", NULL};
 static const char *const CIRCLE_KEYS[] = {"centre", "radius", "inner_radius", NULL};
 static const char *const PHASE_KEYS[] = {"name", "rho0", "c0", "gamma", "p_background",
-                                         "viscosity", "incompressible", NULL};
+                                         "viscosity", "incompressible", "density_band", NULL};
 static const char *const FLUID_KEYS[] = {"phase", "box", "circle", "polygon", "velocity",
                                          "velocity_gradient", NULL};
 static const char *const POTENTIAL_KEYS[] = {"omega", "centre", NULL};
@@ -73,6 +73,10 @@ static const struct rule R_CFL = {"a number > 0 and <= 2", 0, 1, 2, 0};
 static const struct rule R_COUNT = {"an integer >= 0", 0, 0, 1e18, 1};
 static const struct rule R_DIMENSION = {"2 or 3", 2, 0, 3, 1};
 static const struct rule R_MODE = {"an integer from 1 to 4", 1, 0, 4, 1};
+
+/* Default density bands [min, max] / rho0 of the instability check: a liquid, a gas. */
+static const double LIQUID_BAND[2] = {0.5, 2.0}, GAS_BAND[2] = {0.1, 10.0};
+#define DT_MIN_FRACTION 1e-6   /* default time.dt_min / the acoustic step CFL h / max c0 */
 
 /* Loader state: where messages go and the dimension read so far. */
 struct ld {
@@ -310,6 +314,20 @@ static int vec(const struct map *m, const char *key, int required, double *out) 
   return required ? missing(m, path, expected) : 0;
 }
 
+/* The density band [min_ratio, max_ratio] under key, 0 <= min_ratio < 1 < max_ratio; def when
+ * absent. */
+static int band(const struct map *m, const char *key, const double *def, double *out) {
+  static const char *expected = "a list [min_ratio, max_ratio] with 0 <= min_ratio < 1 < max_ratio";
+  char path[PATH_LEN], got[128];
+  const struct ynode *v = get(m, key, path);
+  out[0] = def[0];
+  out[1] = def[1];
+  if (!v) return 0;
+  if (vec_of(m->ld, v, path, 2, expected, out)) return 1;
+  if (out[0] >= 0 && out[0] < 1 && out[1] > 1) return 0;
+  return fail(m->ld, v, path, "got %s, expected %s", fmt_vec(got, sizeof got, out, 2), expected);
+}
+
 /* The dimension x dimension matrix under key (list of rows); left zero when absent. */
 static int matrix(const struct map *m, const char *key, double out[3][3]) {
   char path[PATH_LEN], rpath[PATH_LEN], expected[96];
@@ -470,7 +488,8 @@ static int read_phase(const struct map *m, struct case_def *c, int i) {
          num(m, "gamma", &R_POSITIVE, 7, &p->gamma) ||
          num(m, "p_background", &R_ANY, 0, &p->p_background) ||
          num(m, "viscosity", &R_NONNEGATIVE, 0, &p->viscosity) ||
-         choice(m, "incompressible", BOOL_NAMES, 0, &p->incompressible);
+         choice(m, "incompressible", BOOL_NAMES, 0, &p->incompressible) ||
+         band(m, "density_band", p->incompressible ? LIQUID_BAND : GAS_BAND, p->density_band);
 }
 
 static int phase_index(const struct map *m, const struct case_def *c, int *out) {
@@ -608,10 +627,20 @@ static int read_physics(const struct map *root, struct case_def *c) {
   return 0;
 }
 
+/* time.dt_min, read after the phases: its default is a fraction of the acoustic step. */
+static int read_dt_min(const struct map *root, struct case_def *c) {
+  struct map t;
+  double c_max = 0;
+  for (int i = 0; i < c->n_phases; i++) c_max = fmax(c_max, c->phases[i].c0);
+  return sub(root, "time", TIME_KEYS, &t) ||
+         num(&t, "dt_min", &R_POSITIVE, DT_MIN_FRACTION * c->cfl * c->h_over_dx * c->dx / c_max,
+             &c->dt_min);
+}
+
 static int read_options(const struct map *root, struct case_def *c) {
   struct map in, pa;
   int pressure;
-  if (read_physics(root, c) || sub(root, "initial", INITIAL_KEYS, &in) ||
+  if (read_dt_min(root, c) || read_physics(root, c) || sub(root, "initial", INITIAL_KEYS, &in) ||
       choice(&in, "pressure", PRESSURE_NAMES, INIT_PRESSURE_HYDROSTATIC, &pressure) ||
       sub(root, "parallel", PARALLEL_KEYS, &pa) ||
       num(&pa, "repartition_threshold", &R_POSITIVE, 0.1, &c->repartition_threshold) ||
@@ -744,6 +773,7 @@ static void put_head(FILE *f, const struct case_def *c) {
   put_num(f, "  ", "end", c->t_end);
   put_num(f, "  ", "cfl", c->cfl);
   put_long(f, "  ", "max_steps", c->max_steps);
+  put_num(f, "  ", "dt_min", c->dt_min);
   fputs("output:\n", f);
   put_num(f, "  ", "interval", c->output_interval);
   put_num(f, "  ", "stats_interval", c->stats_interval);
@@ -765,6 +795,7 @@ static void put_bodies(FILE *f, const struct case_def *c) {
     put_num(f, "    ", "p_background", p->p_background);
     put_num(f, "    ", "viscosity", p->viscosity);
     put_word(f, "    ", "incompressible", BOOL_NAMES[p->incompressible != 0]);
+    put_vec(f, "    ", "density_band", p->density_band, 2);
   }
   put_list_key(f, "fluids", c->n_fluids);
   for (int i = 0; i < c->n_fluids; i++) {
