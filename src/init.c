@@ -9,21 +9,6 @@
 
 #define BOUNDARY_TOL 1e-9   /* relative tolerance on distances to wall boundaries */
 
-/* 1 if x lies where fluid may be: inside some tank (if any) and outside every obstacle. */
-static int fluid_accessible(const struct case_def *c, const double *x) {
-  int has_tank = 0, in_tank = 0;
-  for (int w = 0; w < c->n_walls; w++) {
-    int inside = shape_contains(&c->walls[w].shape, c->dimension, x);
-    if (c->walls[w].fluid_side == FLUID_INSIDE) {
-      has_tank = 1;
-      in_tank |= inside;
-    } else if (inside) {
-      return 0;
-    }
-  }
-  return !has_tank || in_tank;
-}
-
 /* Distance from x to the nearest wall boundary (infinity without walls). */
 static double wall_distance(const struct case_def *c, const double *x) {
   double best = INFINITY, q[3];
@@ -185,7 +170,7 @@ static int fill_fluids(const struct case_def *c, int rank, int n_ranks, struct p
     lattice_cover(&l, c->dimension, c->dx, anchor, lo, hi);
     for (long node = 0, size = lattice_size(&l); node < size; node++) {
       lattice_node(&l, node, x);
-      if (!shape_contains(s, c->dimension, x) || !fluid_accessible(c, x)) continue;
+      if (!shape_contains(s, c->dimension, x) || walls_solid_at(c, x, NULL) >= 0) continue;
       if (wall_distance(c, x) < 0.5 * c->dx * (1 - BOUNDARY_TOL)) continue;
       int j = earlier_region(c, k, x);
       if (j >= 0) {
@@ -271,7 +256,7 @@ static int fill_walls(const struct case_def *c, double thickness, int rank, int 
     double *nodes = wall_nodes(c, w, thickness, &count), x[3] = {0, 0, 0};
     for (long k = 0; k < count; k++) {
       for (int d = 0; d < dim; d++) x[d] = nodes[k * dim + d];
-      if (!ghost_of(c, w, thickness, x) || fluid_accessible(c, x)) continue;
+      if (!ghost_of(c, w, thickness, x) || walls_solid_at(c, x, NULL) < 0) continue;
       if (earlier_wall(c, w, thickness, x) >= 0) continue;
       if (!inside_domain(c, x)) {
         snprintf(err, err_len, "%s: walls.%d: its %d ghost layers (%g m thick) reach (%g, %g%s) outside "
