@@ -183,21 +183,31 @@ static double stable_sound_speed(const struct engine *e) {
   return c_stab;
 }
 
-/* Global time step of paper 000 Eq. 12: acoustic (with c_stab), acceleration, viscous, damper. */
-static double time_step(struct engine *e) {
+/* Lower *dt to candidate if smaller, naming the limit. */
+static void limit_by(double *dt, const char **limit, double candidate, const char *name) {
+  if (candidate < *dt) {
+    *dt = candidate;
+    *limit = name;
+  }
+}
+
+/* Global time step of paper 000 Eq. 12: acoustic (with c_stab), acceleration, viscous, damper;
+ * *limit names the smallest term. Not yet cut to time.end. */
+static double time_step(struct engine *e, const char **limit) {
   const struct case_def *c = e->c;
   double a_max = reduce_first_stage(e);
   double c_eff = fmax(e->c_max, stable_sound_speed(e));
   double dt = c->cfl * e->h / c_eff;
-  if (a_max > 0) dt = fmin(dt, 0.25 * sqrt(e->h / a_max));
+  *limit = c_eff > e->c_max ? "acoustic (c_stab)" : "acoustic";
+  if (a_max > 0) limit_by(&dt, limit, 0.25 * sqrt(e->h / a_max), "acceleration");
   for (int ph = 0; ph < c->n_phases; ph++) {
     const struct phase *f = &c->phases[ph];
-    if (c->alpha > 0) dt = fmin(dt, e->h / (c->alpha * f->c0));
-    if (f->viscosity > 0) dt = fmin(dt, 0.125 * e->h * e->h * f->rho0 / f->viscosity);
+    if (c->alpha > 0) limit_by(&dt, limit, e->h / (c->alpha * f->c0), "artificial viscosity");
+    if (f->viscosity > 0) limit_by(&dt, limit, 0.125 * e->h * e->h * f->rho0 / f->viscosity, "viscous");
     if ((e->features & FEAT_DAMPER) && f->incompressible)
-      dt = fmin(dt, c->cfl * e->h / (c->acoustic_damper * f->c0));
+      limit_by(&dt, limit, c->cfl * e->h / (c->acoustic_damper * f->c0), "acoustic damper");
   }
-  return fmin(dt, c->t_end - e->time);
+  return dt;
 }
 
 static void save_state(struct engine *e) {
@@ -233,33 +243,6 @@ static void rk4_update(struct engine *e, int s) {
   }
 }
 
-/* The first owned fluid particle with a non-finite derivative; its quantity in *what. */
-static long first_non_finite(const struct engine *e, const char **what) {
-  const struct parts *p = &e->p;
-  for (long i = 0; i < p->n_owned; i++) {
-    if (p->phase[i] == PHASE_WALL) continue;
-    *what = "drho/dt";
-    if (!isfinite(e->w.drho[i])) return i;
-    for (int d = 0; d < p->dim; d++) {
-      *what = "du/dt";
-      if (!isfinite(e->w.dv[d][i])) return i;
-      *what = "shifting velocity";
-      if (e->w.du[d] && !isfinite(e->w.du[d][i])) return i;
-    }
-  }
-  return -1;
-}
-
-/* Stop with a diagnosis if any rank holds a non-finite derivative. Returns 0 or 2. */
-static int check_finite(struct engine *e) {
-  const char *what = "";
-  long bad = first_non_finite(e, &what);
-  int any = bad >= 0;
-  MPI_Allreduce(MPI_IN_PLACE, &any, 1, MPI_INT, MPI_MAX, e->comm);
-  if (bad >= 0) engine_report_particle(e, bad, what);
-  return any ? 2 : 0;
-}
-
 int engine_step(struct engine *e) {
   engine_work_reserve(e);
   save_state(e);
@@ -268,10 +251,12 @@ int engine_step(struct engine *e) {
   for (int s = 0; s < 4; s++) {
     e->stage = s;
     engine_evaluate(e, s == 0);
-    if (check_finite(e)) return 2;
+    if (engine_check_derivatives(e)) return 2;
     if (s == 0) {
-      e->dt = time_step(e);
-      if (!(e->dt > 0) || !isfinite(e->dt)) return 2;
+      const char *limit;
+      e->dt = time_step(e, &limit);
+      if (engine_check_dt(e, limit)) return 2;
+      e->dt = fmin(e->dt, e->c->t_end - e->time);
     }
     rk4_update(e, s);
   }
