@@ -12,6 +12,11 @@
 int case_load(const char *path, int n_sets, char *const *sets, struct case_def *c,
               char *err, size_t err_len);
 
+/** case_load on the len bytes of YAML text instead of a file; `source` names the text in
+ *  messages and in c->source_file. */
+int case_load_string(const char *text, size_t len, const char *source, int n_sets,
+                     char *const *sets, struct case_def *c, char *err, size_t err_len);
+
 /** The resolved case as YAML text (every key, defaults filled). Caller frees. Loading this
  *  text again gives the same case. */
 char *case_to_yaml(const struct case_def *c);

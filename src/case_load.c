@@ -3,6 +3,7 @@
  * and write a resolved case back as YAML. */
 #include "case_load.h"
 
+#include <errno.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -14,6 +15,7 @@
 #define PATH_LEN 256
 #define LIST_LEN 512
 #define REQUIRED NAN   /* the default of a required number */
+#define CASE_MAX_FILE_BYTES (1 << 20)   /* largest case file read [bytes] */
 
 /* Enumeration spellings, in the order of the enums of case.h. */
 static const char *const SCHEME_NAMES[] = {"delta-plus", "delta-sph", "same-phase-continuity",
@@ -657,21 +659,56 @@ static int read_case(const struct ynode *root, struct case_def *c, char *err, si
          read_contents(&m, c) || read_options(&m, c);
 }
 
-/* Load, override, validate and resolve a case file into c. */
-int case_load(const char *path, int n_sets, char *const *sets, struct case_def *c, char *err,
-              size_t err_len) {
+/* Load, override, validate and resolve the case text into c. */
+int case_load_string(const char *text, size_t len, const char *source, int n_sets,
+                     char *const *sets, struct case_def *c, char *err, size_t err_len) {
   memset(c, 0, sizeof *c);
-  if (strlen(path) >= sizeof c->source_file) {
+  if (strlen(source) >= sizeof c->source_file) {
     if (err_len) snprintf(err, err_len, "%s: path too long, expected at most %zu characters",
-                          path, sizeof c->source_file - 1);
+                          source, sizeof c->source_file - 1);
     return 1;
   }
-  snprintf(c->source_file, sizeof c->source_file, "%s", path);
-  struct ynode *root = ytree_load(path, err, err_len);
+  snprintf(c->source_file, sizeof c->source_file, "%s", source);
+  struct ynode *root = ytree_parse(text, len, source, 0, err, err_len);
   int rc = root ? 0 : 1;
   for (int i = 0; rc == 0 && i < n_sets; i++) rc = ytree_set(root, sets[i], i + 1, err, err_len);
   if (rc == 0) rc = read_case(root, c, err, err_len);
   ytree_free(root);
+  return rc;
+}
+
+/* The whole file at path (at most CASE_MAX_FILE_BYTES) in a new buffer, its size in *len; NULL
+ * with a message on failure. */
+static char *read_file(const char *path, size_t *len, char *err, size_t err_len) {
+  FILE *f = fopen(path, "rb");
+  if (!f) {
+    snprintf(err, err_len, "%s: cannot open the file: %s", path, strerror(errno));
+    return NULL;
+  }
+  char *text = malloc(CASE_MAX_FILE_BYTES + 1);
+  if (!text) abort();
+  *len = fread(text, 1, CASE_MAX_FILE_BYTES + 1, f);
+  if (ferror(f))
+    snprintf(err, err_len, "%s: cannot read the file: %s", path, strerror(errno));
+  else if (*len > CASE_MAX_FILE_BYTES)
+    snprintf(err, err_len, "%s: larger than %d bytes, expected a case file of at most that size",
+             path, CASE_MAX_FILE_BYTES);
+  int ok = !ferror(f) && *len <= CASE_MAX_FILE_BYTES;
+  fclose(f);
+  if (ok) return text;
+  free(text);
+  return NULL;
+}
+
+/* Load, override, validate and resolve a case file into c. */
+int case_load(const char *path, int n_sets, char *const *sets, struct case_def *c, char *err,
+              size_t err_len) {
+  size_t len = 0;
+  char *text = read_file(path, &len, err, err_len);
+  memset(c, 0, sizeof *c);
+  if (!text) return 1;
+  int rc = case_load_string(text, len, path, n_sets, sets, c, err, err_len);
+  free(text);
   return rc;
 }
 

@@ -183,6 +183,21 @@ static void test_malformed(void) {
   struct case_def c;
   CHECK(case_load("/nonexistent/case.yaml", 0, NULL, &c, err, sizeof err) == 1 &&
             strstr(err, "/nonexistent/case.yaml: cannot open") != NULL, "missing file: %s", err);
+  CHECK(case_load(dir, 0, NULL, &c, err, sizeof err) == 1 && strstr(err, "cannot read the file"),
+        "a directory: %s", err);
+}
+
+/* The same text loads from memory, named by its source; a NUL byte is malformed YAML. */
+static void test_string(void) {
+  struct case_def c;
+  const char *text = variant(0, "");
+  CHECK(case_load_string(text, strlen(text), "memory", 0, NULL, &c, err, sizeof err) == 0,
+        "from memory: %s", err);
+  CHECK(strcmp(c.source_file, "memory") == 0 && c.dx == 0.02, "source and content");
+  CHECK(case_load_string(text, 4, "memory", 0, NULL, &c, err, sizeof err) == 1 &&
+            strstr(err, "memory:") != NULL, "only the given length is read: %s", err);
+  CHECK(case_load_string("name: a\0b\n", 11, "memory", 0, NULL, &c, err, sizeof err) == 1 &&
+            strstr(err, "memory:1: malformed YAML") != NULL, "NUL byte: %s", err);
 }
 
 static void test_set(void) {
@@ -357,6 +372,7 @@ int main(void) {
   test_value_errors();
   test_shape_errors();
   test_malformed();
+  test_string();
   test_set();
   test_round_trip();
   unlink(path);
