@@ -75,6 +75,7 @@ static const struct rule R_CFL = {"a number > 0 and <= 2", 0, 1, 2, 0};
 static const struct rule R_COUNT = {"an integer >= 0", 0, 0, 1e18, 1};
 static const struct rule R_DIMENSION = {"2 or 3", 2, 0, 3, 1};
 static const struct rule R_MODE = {"an integer from 1 to 4", 1, 0, 4, 1};
+static const struct rule R_H_OVER_DX = {"a number > 0 and <= 10", 0, 1, 10, 0};
 
 /* Default density bands [min, max] / rho0 of the instability check: a liquid, a gas. */
 static const double LIQUID_BAND[2] = {0.5, 2.0}, GAS_BAND[2] = {0.1, 10.0};
@@ -567,7 +568,7 @@ static int read_run(const struct map *root, struct case_def *c) {
   double h_default = c->kernel == KERNEL_GAUSSIAN ? 1.33 : 2.0;
   return sub(root, "resolution", RESOLUTION_KEYS, &r) ||
          num(&r, "dx", &R_POSITIVE, REQUIRED, &c->dx) ||
-         num(&r, "h_over_dx", &R_POSITIVE, h_default, &c->h_over_dx) ||
+         num(&r, "h_over_dx", &R_H_OVER_DX, h_default, &c->h_over_dx) ||
          sub(root, "time", TIME_KEYS, &t) || num(&t, "end", &R_POSITIVE, REQUIRED, &c->t_end) ||
          num(&t, "cfl", &R_CFL, 1.0, &c->cfl) ||
          lnum(&t, "max_steps", &R_COUNT, 0, &c->max_steps) ||

@@ -132,6 +132,8 @@ static void test_value_errors(void) {
                "got the string \"0.1\", expected a number > 0");
   expect_error(variant(3, "resolution: {dx: .inf}"), 0, NULL, "case.yaml:3: resolution.dx: ",
                "expected a number > 0");
+  expect_error(variant(3, "resolution: {dx: 0.1, h_over_dx: 11}"), 0, NULL,
+               "case.yaml:3: resolution.h_over_dx: ", "got '11', expected a number > 0 and <= 10");
   expect_error(variant(4, "time: {end: 1, cfl: 5}"), 0, NULL, "case.yaml:4: time.cfl: ",
                "got '5', expected a number > 0 and <= 2");
   expect_error(variant(4, "time: {end: 1, max_steps: 1.5}"), 0, NULL, "case.yaml:4: time.max_steps",
