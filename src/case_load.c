@@ -660,6 +660,21 @@ static int read_case(const struct ynode *root, struct case_def *c, char *err, si
          read_contents(&m, c) || read_options(&m, c);
 }
 
+/* Rewrite the message in err on one printable line: control characters (a newline inside a
+ * value or key shown in it) become \n, \t or \xNN; the end is cut at err_len. */
+static void one_line(char *err, size_t err_len) {
+  char buf[4096];
+  size_t k = 0;
+  for (const unsigned char *c = (const unsigned char *)err; *c && k + 5 < sizeof buf; c++) {
+    if (*c >= 0x20 && *c != 0x7f)
+      buf[k++] = (char)*c;
+    else
+      k += (size_t)snprintf(buf + k, 5, *c == '\n' ? "\\n" : *c == '\t' ? "\\t" : "\\x%02x", *c);
+  }
+  buf[k] = '\0';
+  snprintf(err, err_len, "%s", buf);
+}
+
 /* Load, override, validate and resolve the case text into c. */
 int case_load_string(const char *text, size_t len, const char *source, int n_sets,
                      char *const *sets, struct case_def *c, char *err, size_t err_len) {
@@ -675,6 +690,7 @@ int case_load_string(const char *text, size_t len, const char *source, int n_set
   for (int i = 0; rc == 0 && i < n_sets; i++) rc = ytree_set(root, sets[i], i + 1, err, err_len);
   if (rc == 0) rc = read_case(root, c, err, err_len);
   ytree_free(root);
+  if (rc && err_len) one_line(err, err_len);
   return rc;
 }
 
@@ -707,6 +723,7 @@ int case_load(const char *path, int n_sets, char *const *sets, struct case_def *
   size_t len = 0;
   char *text = read_file(path, &len, err, err_len);
   memset(c, 0, sizeof *c);
+  if (!text && err_len) one_line(err, err_len);
   if (!text) return 1;
   int rc = case_load_string(text, len, path, n_sets, sets, c, err, err_len);
   free(text);

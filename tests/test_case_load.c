@@ -182,6 +182,8 @@ static void test_malformed(void) {
                "expected valid YAML");
   expect_error(variant(13, "  bad: indent"), 0, NULL, "case.yaml:13: probes: malformed YAML", "YAML");
   expect_error(variant(13, "gravity: *g"), 0, NULL, "case.yaml:", "alias");
+  expect_error(variant(1, "name: \"two\\nlines\""), 0, NULL, "case.yaml:1: name: ",
+               "got the string \"two\\nlines\", expected a name");
   struct case_def c;
   CHECK(case_load("/nonexistent/case.yaml", 0, NULL, &c, err, sizeof err) == 1 &&
             strstr(err, "/nonexistent/case.yaml: cannot open") != NULL, "missing file: %s", err);
