@@ -220,14 +220,18 @@ static int sub(const struct map *parent, const char *key, const char *const *all
 
 /* ---- scalar getters ---- */
 
+/* 1 if x is a value the rule allows. */
+static int allowed(const struct rule *r, double x) {
+  return isfinite(x) && (r->lo_open ? x > r->lo : x >= r->lo) && x <= r->hi &&
+         (!r->integer || x == floor(x));
+}
+
 static int number_of(struct ld *ld, const struct ynode *v, const char *path, const struct rule *r,
                      double *out) {
   char *end = NULL;
   double x = 0;
   if (v->kind == YNODE_SCALAR && v->plain && v->text[0]) x = strtod(v->text, &end);
-  int ok = end && *end == '\0' && isfinite(x) && (r->lo_open ? x > r->lo : x >= r->lo) &&
-           x <= r->hi && (!r->integer || x == floor(x));
-  if (!ok) return fail_got(ld, v, path, r->expected);
+  if (!end || *end != '\0' || !allowed(r, x)) return fail_got(ld, v, path, r->expected);
   *out = x;
   return 0;
 }
@@ -239,6 +243,9 @@ static int num(const struct map *m, const char *key, const struct rule *r, doubl
   const struct ynode *v = get(m, key, path);
   if (v) return number_of(m->ld, v, path, r, out);
   if (isnan(def)) return missing(m, path, r->expected);
+  if (!allowed(r, def))   /* a default computed from other keys, e.g. an underflow to 0 */
+    return fail(m->ld, m->at, path, "got the default %g computed from the other keys, expected %s: "
+                "set the key", def, r->expected);
   *out = def;
   return 0;
 }
@@ -767,17 +774,39 @@ static void put_vec(FILE *f, const char *indent, const char *key, const double *
   fputc('\n', f);
 }
 
-/* A double-quoted YAML string. */
+/* The code point of the UTF-8 sequence at s and its length in *n; a malformed sequence reads as
+ * the one byte U+FFFD. */
+static unsigned long utf8_at(const unsigned char *s, int *n) {
+  *n = s[0] < 0xc0 ? 1 : s[0] < 0xe0 ? 2 : s[0] < 0xf0 ? 3 : 4;
+  if (*n == 1) return s[0] < 0x80 ? s[0] : 0xfffd;
+  unsigned long cp = s[0] & (0x7fu >> *n);
+  for (int i = 1; i < *n; i++) {
+    if ((s[i] & 0xc0) != 0x80) return *n = 1, 0xfffd;
+    cp = (cp << 6) | (s[i] & 0x3fu);
+  }
+  return cp;
+}
+
+/* 1 if a double-quoted YAML scalar may hold code point cp as it is: printable, not a quote, a
+ * backslash or a line break (NEL, LS and PS would fold into spaces when read again). */
+static int yaml_verbatim(unsigned long cp) {
+  if (cp == '"' || cp == '\\') return 0;
+  return (cp >= 0x20 && cp <= 0x7e) || (cp >= 0xa0 && cp <= 0xd7ff && cp != 0x2028 && cp != 0x2029) ||
+         (cp >= 0xe000 && cp <= 0xfffd && cp != 0xfeff) || (cp >= 0x10000 && cp <= 0x10ffff);
+}
+
+/* A double-quoted YAML string; characters it may not hold as they are are escaped. */
 static void put_str(FILE *f, const char *indent, const char *key, const char *s) {
   fprintf(f, "%s%s: \"", indent, key);
-  for (; *s; s++) {
-    unsigned char ch = (unsigned char)*s;
-    if (ch == '"' || ch == '\\')
-      fprintf(f, "\\%c", ch);
-    else if (ch < 0x20 || ch == 0x7f)
-      fprintf(f, "\\x%02x", ch);
+  const unsigned char *c = (const unsigned char *)s;
+  for (int n; *c; c += n) {
+    unsigned long cp = utf8_at(c, &n);
+    if (yaml_verbatim(cp))
+      fwrite(c, 1, (size_t)n, f);
+    else if (cp == '"' || cp == '\\')
+      fprintf(f, "\\%c", (int)cp);
     else
-      fputc(ch, f);
+      fprintf(f, cp < 0x100 ? "\\x%02lx" : cp < 0x10000 ? "\\u%04lx" : "\\U%08lx", cp);
   }
   fputs("\"\n", f);
 }

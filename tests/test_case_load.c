@@ -361,6 +361,13 @@ static void test_round_trip(void) {
              "gravity: [0, 0, -9.81]\ndomain: {min: [0, 0, 0], max: [1, 1, 1]}\n"
              "phases: [{name: w, rho0: 1000, c0: 20}]\n"
              "fluids: [{phase: w, circle: {centre: [0.5, 0.5, 0.5], radius: 0.25}}]\n");
+  round_trip("name: u\ndimension: 2\nresolution: {dx: 0.1}\ntime: {end: 1}\n"
+             "description: \"line\\u2028sep\\x85nel\\u2029par\\x80c1\\ufeffbom \\U0001F30A\"\n"
+             "domain: {min: [0, 0], max: [1, 1]}\nphases: [{name: w, rho0: 1000, c0: 20}]\n");
+  expect_error("name: t\ndimension: 2\nresolution: {dx: 1e-300}\ntime: {end: 1}\n"
+               "domain: {min: [0, 0], max: [1, 1]}\nphases: [{name: w, rho0: 1, c0: 1e300}]\n", 0,
+               NULL, "case.yaml:4: time.dt_min: got the default 0 computed from the other keys",
+               "expected a number > 0: set the key");
   expect_error("name: p\ndimension: 3\nresolution: {dx: 0.1}\ntime: {end: 1}\n"
                "domain: {min: [0, 0, 0], max: [1, 1, 1]}\nphases: [{name: w, rho0: 1, c0: 1}]\n"
                "walls: [{polygon: [[0, 0], [1, 0], [0, 1]]}]\n", 0, NULL,
