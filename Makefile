@@ -83,7 +83,8 @@ build/fuzz/fuzz_case_load: $(FUZZ_SRC) $(wildcard include/*.h) | build/fuzz
 build/obj build/tests build/fuzz:
 	mkdir -p $@
 
-# libFuzzer on the case loader for FUZZ_SECONDS; seeds: the cases and the regression inputs.
+# libFuzzer on the case loader for FUZZ_SECONDS; seeds: the cases and the regression inputs;
+# dictionary: tests/fuzz/case.dict.
 # New inputs go to build/fuzz/corpus, crashes to build/fuzz/crash-*.
 fuzz:
 	@scripts/install-deps fuzz
@@ -91,7 +92,7 @@ fuzz:
 	@mkdir -p build/fuzz/corpus build/fuzz/seeds
 	@for f in cases/*/case.yaml; do cp "$$f" "build/fuzz/seeds/$$(basename $$(dirname $$f)).yaml"; done
 	@cp tests/cases/*.yaml tests/fuzz_regressions/* build/fuzz/seeds/
-	build/fuzz/fuzz_case_load -max_total_time=$(FUZZ_SECONDS) -timeout=10 \
+	build/fuzz/fuzz_case_load -max_total_time=$(FUZZ_SECONDS) -timeout=10 -dict=tests/fuzz/case.dict \
 	  -artifact_prefix=build/fuzz/ build/fuzz/corpus build/fuzz/seeds
 
 test: deps
