@@ -41,13 +41,20 @@ CFLAGS  += -std=c11 -D_POSIX_C_SOURCE=200809L -Wall -Wextra -Werror -Iinclude \
            -DMPSPH_VERSION='"$(VERSION)"' $(HDF5_CFLAGS) $(METIS_CFLAGS) $(YAML_CFLAGS)
 LDLIBS  := $(HDF5_LIBS) $(METIS_LIBS) $(YAML_LIBS) -lm
 
+# The case loader and what `check` runs of it, without MPI: the fuzz target and its replay.
+FUZZ_SRC := $(addprefix src/,case_load.c yaml_tree.c init.c geometry.c kernel.c parts.c) tests/fuzz/fuzz_case_load.c
+FUZZ_CFLAGS  = -std=c11 -D_POSIX_C_SOURCE=200809L -g -O1 -Wall -Wextra -Werror -Iinclude $(YAML_CFLAGS)
+CLANG    ?= clang
+SANITIZE ?= -fsanitize=address,undefined -fno-sanitize-recover=all
+FUZZ_SECONDS ?= 120
+
 SRC      := $(wildcard src/*.c)
 LIB_OBJ  := $(patsubst src/%.c,build/obj/%.o,$(filter-out src/main.c,$(SRC)))
 TEST_SRC := $(wildcard tests/test_*.c)
 TEST_BIN := $(patsubst tests/%.c,build/tests/%,$(TEST_SRC))
 
 .PHONY: all deps test run validate bench fuzz clean
-all: build/mpsph $(TEST_BIN)
+all: build/mpsph $(TEST_BIN) build/tests/fuzz_replay
 
 deps:
 	@scripts/install-deps
@@ -67,8 +74,29 @@ build/tests/%: tests/%.c tests/check.h build/libmpsph.a | build/tests
 	@echo "LD $@"
 	@$(MPICC) $(CFLAGS) -Itests $< build/libmpsph.a -o $@ $(LDLIBS)
 
-build/obj build/tests:
+build/tests/fuzz_replay: tests/fuzz/replay.c $(FUZZ_SRC) $(wildcard include/*.h) | build/tests
+	@echo "LD $@"
+	@$(CC) $(FUZZ_CFLAGS) $(SANITIZE) tests/fuzz/replay.c $(FUZZ_SRC) -o $@ $(YAML_LIBS) -lm
+
+build/fuzz/fuzz_case_load: $(FUZZ_SRC) $(wildcard include/*.h) | build/fuzz
+	@echo "LD $@"
+	@$(CLANG) $(FUZZ_CFLAGS) -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all \
+	  $(FUZZ_SRC) -o $@ $(YAML_LIBS) -lm
+
+build/obj build/tests build/fuzz:
 	mkdir -p $@
+
+# libFuzzer on the case loader for FUZZ_SECONDS; seeds: the cases and the regression inputs;
+# dictionary: tests/fuzz/case.dict.
+# New inputs go to build/fuzz/corpus, crashes to build/fuzz/crash-*.
+fuzz:
+	@scripts/install-deps fuzz
+	@$(MAKE) --no-print-directory build/fuzz/fuzz_case_load
+	@mkdir -p build/fuzz/corpus build/fuzz/seeds
+	@for f in cases/*/case.yaml; do cp "$$f" "build/fuzz/seeds/$$(basename $$(dirname $$f)).yaml"; done
+	@cp tests/cases/*.yaml tests/fuzz_regressions/* build/fuzz/seeds/
+	build/fuzz/fuzz_case_load -max_total_time=$(FUZZ_SECONDS) -timeout=10 -dict=tests/fuzz/case.dict \
+	  -artifact_prefix=build/fuzz/ build/fuzz/corpus build/fuzz/seeds
 
 test: deps
 	@$(MAKE) --no-print-directory all

@@ -43,6 +43,7 @@ struct phase {
   double p_background;  /* background pressure [Pa] */
   double viscosity;     /* dynamic viscosity [Pa s]; 0 = artificial viscosity only */
   int incompressible;   /* liquid (receives the acoustic damper) */
+  double density_band[2];   /* [min, max] of rho/rho0; leaving it stops the run as unstable [-] */
 };
 
 /** A region filled with particles of one phase on the initial lattice. */
@@ -84,6 +85,7 @@ struct case_def {
   double potential_centre[3];   /* [m] */
   double t_end;              /* [s] */
   double cfl;                /* [-] */
+  double dt_min;             /* a time step below this stops the run as unstable [s] */
   double output_interval;    /* snapshot interval [s]; 0 = first and last only */
   double stats_interval;     /* stats.csv interval [s] */
   double probes_interval;    /* probes.csv interval [s] */

@@ -12,10 +12,10 @@
 int case_load(const char *path, int n_sets, char *const *sets, struct case_def *c,
               char *err, size_t err_len);
 
-/** Like case_load for a case given as YAML text (e.g. the case_yaml of a checkpoint); `source`
- *  names it in messages. */
-int case_load_text(const char *text, const char *source, struct case_def *c, char *err,
-                   size_t err_len);
+/** case_load on the len bytes of YAML text instead of a file; `source` names the text in
+ *  messages and in c->source_file. */
+int case_load_string(const char *text, size_t len, const char *source, int n_sets,
+                     char *const *sets, struct case_def *c, char *err, size_t err_len);
 
 /** The resolved case as YAML text (every key, defaults filled). Caller frees. Loading this
  *  text again gives the same case. */

@@ -138,12 +138,36 @@ void engine_free(struct engine *e);
 /** Advance one RK4 step (all stages, dt from the first stage). Returns 0 or 2 if a check tripped. */
 int engine_step(struct engine *e);
 
+/** After an RK stage: stop (2 on every rank) if an owned fluid particle has a non-finite
+ *  derivative (drho/dt, du/dt, shifting velocity), else 0. Collective. */
+int engine_check_derivatives(struct engine *e);
+
+/** After the time step e->dt [s] is computed (limit: the name of its smallest term): 2 if it is
+ *  below time.dt_min or not finite, naming the particle with the largest acceleration; else 0.
+ *  Collective only when it trips, which it does on every rank alike. */
+int engine_check_dt(struct engine *e, const char *limit);
+
+/** After a step, on the new state: stop (2 on every rank) if a particle left the domain
+ *  (left_domain: its index on this rank, or -1), lies deeper than half a dx inside a wall's
+ *  solid, or has a density outside its phase's density_band, else 0. Collective. */
+int engine_check_state(struct engine *e, long left_domain);
+
 /** Migrate, sort, rebuild the halo and the cell index after positions changed.
  *  Returns 0 or 2 (a particle left the domain or jumped beyond the neighbouring ranks). */
 int engine_rebuild(struct engine *e);
 
 /** Re-partition the cells with METIS from the current particle weights and redistribute. */
 int engine_repartition(struct engine *e);
+
+/** The largest distance a particle may move within one step: half the cell skin, so that the
+ *  cells and neighbour lists built at the start of the step hold every pair in the kernel
+ *  support at every stage [m]. */
+double engine_shift_max(const struct engine *e);
+
+/** 1 if slot i is a ghost of a moving wall. */
+static inline int engine_moving_ghost(const struct engine *e, long i) {
+  return e->p.phase[i] == PHASE_WALL && e->c->walls[e->p.wall[i]].moving;
+}
 
 /** Make the work arrays hold at least the current particle capacity. */
 void engine_work_reserve(struct engine *e);

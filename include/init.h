@@ -23,6 +23,11 @@ int init_wall_layers(const struct case_def *c, double support);
 int init_particles(const struct case_def *c, double support, int rank, int n_ranks,
                    struct parts *p, struct init_counts *counts, char *err, size_t err_len);
 
+/** An upper bound on the lattice nodes init_particles visits (fluid regions and wall ghost
+ *  candidates), hence on the particles it generates, computed without visiting them (infinity
+ *  when beyond a double). */
+double init_visit_count(const struct case_def *c, double support);
+
 /** Initial gauge pressure [Pa] at x balancing the body forces: with uniform gravity the exact
  *  weight of the fluid regions above x; with a potential or a linear initial velocity field,
  *  integrated along the direction of the balancing acceleration. */

@@ -27,13 +27,11 @@ struct ynode {
   struct yentry *entries;
 };
 
-/** Parse the YAML file `path` (one document) into a tree. Returns NULL with a one-line message
- *  "<path>:<line>: ..." in err on a missing file, malformed YAML, duplicate keys or aliases. */
-struct ynode *ytree_load(const char *path, char *err, size_t err_len);
-
-/** Parse YAML text (block or flow) into a tree whose nodes name `source`. line 0: nodes get
- *  their line in the text; line > 0: every node gets that line. NULL and err on error. */
-struct ynode *ytree_parse(const char *text, const char *source, int line, char *err,
+/** Parse len bytes of YAML text (one document, block or flow; NUL bytes are errors) into a tree
+ *  whose nodes name `source`. line 0: nodes get their line in the text; line > 0: every node gets
+ *  that line. Returns NULL with a one-line message "<source>:<line>: ..." in err on malformed
+ *  YAML, duplicate keys, aliases or more than one document. */
+struct ynode *ytree_parse(const char *text, size_t len, const char *source, int line, char *err,
                           size_t err_len);
 
 /** Free a tree (NULL is allowed). */

@@ -3,6 +3,7 @@
  * and write a resolved case back as YAML. */
 #include "case_load.h"
 
+#include <errno.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -14,6 +15,7 @@
 #define PATH_LEN 256
 #define LIST_LEN 512
 #define REQUIRED NAN   /* the default of a required number */
+#define CASE_MAX_FILE_BYTES (1 << 20)   /* largest case file read [bytes] */
 
 /* Enumeration spellings, in the order of the enums of case.h. */
 static const char *const SCHEME_NAMES[] = {"delta-plus", "delta-sph", "same-phase-continuity",
@@ -36,13 +38,13 @@ static const char *const ROOT_KEYS[] = {"name", "description", "dimension", "sch
                                         "phases", "fluids", "walls", "physics", "initial",
                                         "probes", "parallel", NULL};
 static const char *const RESOLUTION_KEYS[] = {"dx", "h_over_dx", NULL};
-static const char *const TIME_KEYS[] = {"end", "cfl", "max_steps", NULL};
+static const char *const TIME_KEYS[] = {"end", "cfl", "max_steps", "dt_min", NULL};
 static const char *const OUTPUT_KEYS[] = {"interval", "stats_interval", "probes_interval",
                                           "progress_interval", "checkpoint_interval", NULL};
 static const char *const BOX_KEYS[] = {"min", "max", NULL};
 static const char *const CIRCLE_KEYS[] = {"centre", "radius", "inner_radius", NULL};
 static const char *const PHASE_KEYS[] = {"name", "rho0", "c0", "gamma", "p_background",
-                                         "viscosity", "incompressible", NULL};
+                                         "viscosity", "incompressible", "density_band", NULL};
 static const char *const FLUID_KEYS[] = {"phase", "box", "circle", "polygon", "velocity",
                                          "velocity_gradient", NULL};
 static const char *const POTENTIAL_KEYS[] = {"omega", "centre", NULL};
@@ -78,6 +80,11 @@ static const struct rule R_CFL = {"a number > 0 and <= 2", 0, 1, 2, 0};
 static const struct rule R_COUNT = {"an integer >= 0", 0, 0, 1e18, 1};
 static const struct rule R_DIMENSION = {"2 or 3", 2, 0, 3, 1};
 static const struct rule R_MODE = {"an integer from 1 to 4", 1, 0, 4, 1};
+static const struct rule R_H_OVER_DX = {"a number > 0 and <= 10", 0, 1, 10, 0};
+
+/* Default density bands [min, max] / rho0 of the instability check: a liquid, a gas. */
+static const double LIQUID_BAND[2] = {0.5, 2.0}, GAS_BAND[2] = {0.1, 10.0};
+#define DT_MIN_FRACTION 1e-6   /* default time.dt_min / the acoustic step CFL h / max c0 */
 
 /* Loader state: where messages go and the dimension read so far. */
 struct ld {
@@ -218,14 +225,18 @@ static int sub(const struct map *parent, const char *key, const char *const *all
 
 /* ---- scalar getters ---- */
 
+/* 1 if x is a value the rule allows. */
+static int allowed(const struct rule *r, double x) {
+  return isfinite(x) && (r->lo_open ? x > r->lo : x >= r->lo) && x <= r->hi &&
+         (!r->integer || x == floor(x));
+}
+
 static int number_of(struct ld *ld, const struct ynode *v, const char *path, const struct rule *r,
                      double *out) {
   char *end = NULL;
   double x = 0;
   if (v->kind == YNODE_SCALAR && v->plain && v->text[0]) x = strtod(v->text, &end);
-  int ok = end && *end == '\0' && isfinite(x) && (r->lo_open ? x > r->lo : x >= r->lo) &&
-           x <= r->hi && (!r->integer || x == floor(x));
-  if (!ok) return fail_got(ld, v, path, r->expected);
+  if (!end || *end != '\0' || !allowed(r, x)) return fail_got(ld, v, path, r->expected);
   *out = x;
   return 0;
 }
@@ -237,6 +248,9 @@ static int num(const struct map *m, const char *key, const struct rule *r, doubl
   const struct ynode *v = get(m, key, path);
   if (v) return number_of(m->ld, v, path, r, out);
   if (isnan(def)) return missing(m, path, r->expected);
+  if (!allowed(r, def))   /* a default computed from other keys, e.g. an underflow to 0 */
+    return fail(m->ld, m->at, path, "got the default %g computed from the other keys, expected %s: "
+                "set the key", def, r->expected);
   *out = def;
   return 0;
 }
@@ -313,6 +327,20 @@ static int vec(const struct map *m, const char *key, int required, double *out) 
   snprintf(expected, sizeof expected, "a list of %d numbers (one per dimension)", m->ld->dim);
   if (v) return vec_of(m->ld, v, path, m->ld->dim, expected, out);
   return required ? missing(m, path, expected) : 0;
+}
+
+/* The density band [min_ratio, max_ratio] under key, 0 <= min_ratio < 1 < max_ratio; def when
+ * absent. */
+static int band(const struct map *m, const char *key, const double *def, double *out) {
+  static const char *expected = "a list [min_ratio, max_ratio] with 0 <= min_ratio < 1 < max_ratio";
+  char path[PATH_LEN], got[128];
+  const struct ynode *v = get(m, key, path);
+  out[0] = def[0];
+  out[1] = def[1];
+  if (!v) return 0;
+  if (vec_of(m->ld, v, path, 2, expected, out)) return 1;
+  if (out[0] >= 0 && out[0] < 1 && out[1] > 1) return 0;
+  return fail(m->ld, v, path, "got %s, expected %s", fmt_vec(got, sizeof got, out, 2), expected);
 }
 
 /* The dimension x dimension matrix under key (list of rows); left zero when absent. */
@@ -475,7 +503,8 @@ static int read_phase(const struct map *m, struct case_def *c, int i) {
          num(m, "gamma", &R_POSITIVE, 7, &p->gamma) ||
          num(m, "p_background", &R_ANY, 0, &p->p_background) ||
          num(m, "viscosity", &R_NONNEGATIVE, 0, &p->viscosity) ||
-         choice(m, "incompressible", BOOL_NAMES, 0, &p->incompressible);
+         choice(m, "incompressible", BOOL_NAMES, 0, &p->incompressible) ||
+         band(m, "density_band", p->incompressible ? LIQUID_BAND : GAS_BAND, p->density_band);
 }
 
 static int phase_index(const struct map *m, const struct case_def *c, int *out) {
@@ -583,7 +612,7 @@ static int read_run(const struct map *root, struct case_def *c) {
   double h_default = c->kernel == KERNEL_GAUSSIAN ? 1.33 : 2.0;
   return sub(root, "resolution", RESOLUTION_KEYS, &r) ||
          num(&r, "dx", &R_POSITIVE, REQUIRED, &c->dx) ||
-         num(&r, "h_over_dx", &R_POSITIVE, h_default, &c->h_over_dx) ||
+         num(&r, "h_over_dx", &R_H_OVER_DX, h_default, &c->h_over_dx) ||
          sub(root, "time", TIME_KEYS, &t) || num(&t, "end", &R_POSITIVE, REQUIRED, &c->t_end) ||
          num(&t, "cfl", &R_CFL, 1.0, &c->cfl) ||
          lnum(&t, "max_steps", &R_COUNT, 0, &c->max_steps) ||
@@ -646,10 +675,20 @@ static int read_physics(const struct map *root, struct case_def *c) {
   return 0;
 }
 
+/* time.dt_min, read after the phases: its default is a fraction of the acoustic step. */
+static int read_dt_min(const struct map *root, struct case_def *c) {
+  struct map t;
+  double c_max = 0;
+  for (int i = 0; i < c->n_phases; i++) c_max = fmax(c_max, c->phases[i].c0);
+  return sub(root, "time", TIME_KEYS, &t) ||
+         num(&t, "dt_min", &R_POSITIVE, DT_MIN_FRACTION * c->cfl * c->h_over_dx * c->dx / c_max,
+             &c->dt_min);
+}
+
 static int read_options(const struct map *root, struct case_def *c) {
   struct map in, pa;
   int pressure;
-  if (read_physics(root, c) || sub(root, "initial", INITIAL_KEYS, &in) ||
+  if (read_dt_min(root, c) || read_physics(root, c) || sub(root, "initial", INITIAL_KEYS, &in) ||
       choice(&in, "pressure", PRESSURE_NAMES, INIT_PRESSURE_HYDROSTATIC, &pressure) ||
       sub(root, "parallel", PARALLEL_KEYS, &pa) ||
       num(&pa, "repartition_threshold", &R_POSITIVE, 0.1, &c->repartition_threshold) ||
@@ -666,8 +705,24 @@ static int read_case(const struct ynode *root, struct case_def *c, char *err, si
          read_contents(&m, c) || read_options(&m, c);
 }
 
-/* Clear c and record its source; 1 with a message when the name does not fit. */
-static int start_case(const char *source, struct case_def *c, char *err, size_t err_len) {
+/* Rewrite the message in err on one printable line: control characters (a newline inside a
+ * value or key shown in it) become \n, \t or \xNN; the end is cut at err_len. */
+static void one_line(char *err, size_t err_len) {
+  char buf[4096];
+  size_t k = 0;
+  for (const unsigned char *c = (const unsigned char *)err; *c && k + 5 < sizeof buf; c++) {
+    if (*c >= 0x20 && *c != 0x7f)
+      buf[k++] = (char)*c;
+    else
+      k += (size_t)snprintf(buf + k, 5, *c == '\n' ? "\\n" : *c == '\t' ? "\\t" : "\\x%02x", *c);
+  }
+  buf[k] = '\0';
+  snprintf(err, err_len, "%s", buf);
+}
+
+/* Load, override, validate and resolve the case text into c. */
+int case_load_string(const char *text, size_t len, const char *source, int n_sets,
+                     char *const *sets, struct case_def *c, char *err, size_t err_len) {
   memset(c, 0, sizeof *c);
   if (strlen(source) >= sizeof c->source_file) {
     if (err_len) snprintf(err, err_len, "%s: path too long, expected at most %zu characters",
@@ -675,28 +730,48 @@ static int start_case(const char *source, struct case_def *c, char *err, size_t 
     return 1;
   }
   snprintf(c->source_file, sizeof c->source_file, "%s", source);
-  return 0;
+  struct ynode *root = ytree_parse(text, len, source, 0, err, err_len);
+  int rc = root ? 0 : 1;
+  for (int i = 0; rc == 0 && i < n_sets; i++) rc = ytree_set(root, sets[i], i + 1, err, err_len);
+  if (rc == 0) rc = read_case(root, c, err, err_len);
+  ytree_free(root);
+  if (rc && err_len) one_line(err, err_len);
+  return rc;
+}
+
+/* The whole file at path (at most CASE_MAX_FILE_BYTES) in a new buffer, its size in *len; NULL
+ * with a message on failure. */
+static char *read_file(const char *path, size_t *len, char *err, size_t err_len) {
+  FILE *f = fopen(path, "rb");
+  if (!f) {
+    snprintf(err, err_len, "%s: cannot open the file: %s", path, strerror(errno));
+    return NULL;
+  }
+  char *text = malloc(CASE_MAX_FILE_BYTES + 1);
+  if (!text) abort();
+  *len = fread(text, 1, CASE_MAX_FILE_BYTES + 1, f);
+  if (ferror(f))
+    snprintf(err, err_len, "%s: cannot read the file: %s", path, strerror(errno));
+  else if (*len > CASE_MAX_FILE_BYTES)
+    snprintf(err, err_len, "%s: larger than %d bytes, expected a case file of at most that size",
+             path, CASE_MAX_FILE_BYTES);
+  int ok = !ferror(f) && *len <= CASE_MAX_FILE_BYTES;
+  fclose(f);
+  if (ok) return text;
+  free(text);
+  return NULL;
 }
 
 /* Load, override, validate and resolve a case file into c. */
 int case_load(const char *path, int n_sets, char *const *sets, struct case_def *c, char *err,
               size_t err_len) {
-  if (start_case(path, c, err, err_len)) return 1;
-  struct ynode *root = ytree_load(path, err, err_len);
-  int rc = root ? 0 : 1;
-  for (int i = 0; rc == 0 && i < n_sets; i++) rc = ytree_set(root, sets[i], i + 1, err, err_len);
-  if (rc == 0) rc = read_case(root, c, err, err_len);
-  ytree_free(root);
-  return rc;
-}
-
-/* Validate and resolve the case given as YAML text (named source in messages) into c. */
-int case_load_text(const char *text, const char *source, struct case_def *c, char *err,
-                   size_t err_len) {
-  if (start_case(source, c, err, err_len)) return 1;
-  struct ynode *root = ytree_parse(text, source, 0, err, err_len);
-  int rc = root ? read_case(root, c, err, err_len) : 1;
-  ytree_free(root);
+  size_t len = 0;
+  char *text = read_file(path, &len, err, err_len);
+  memset(c, 0, sizeof *c);
+  if (!text && err_len) one_line(err, err_len);
+  if (!text) return 1;
+  int rc = case_load_string(text, len, path, n_sets, sets, c, err, err_len);
+  free(text);
   return rc;
 }
 
@@ -737,17 +812,39 @@ static void put_vec(FILE *f, const char *indent, const char *key, const double *
   fputc('\n', f);
 }
 
-/* A double-quoted YAML string. */
+/* The code point of the UTF-8 sequence at s and its length in *n; a malformed sequence reads as
+ * the one byte U+FFFD. */
+static unsigned long utf8_at(const unsigned char *s, int *n) {
+  *n = s[0] < 0xc0 ? 1 : s[0] < 0xe0 ? 2 : s[0] < 0xf0 ? 3 : 4;
+  if (*n == 1) return s[0] < 0x80 ? s[0] : 0xfffd;
+  unsigned long cp = s[0] & (0x7fu >> *n);
+  for (int i = 1; i < *n; i++) {
+    if ((s[i] & 0xc0) != 0x80) return *n = 1, 0xfffd;
+    cp = (cp << 6) | (s[i] & 0x3fu);
+  }
+  return cp;
+}
+
+/* 1 if a double-quoted YAML scalar may hold code point cp as it is: printable, not a quote, a
+ * backslash or a line break (NEL, LS and PS would fold into spaces when read again). */
+static int yaml_verbatim(unsigned long cp) {
+  if (cp == '"' || cp == '\\') return 0;
+  return (cp >= 0x20 && cp <= 0x7e) || (cp >= 0xa0 && cp <= 0xd7ff && cp != 0x2028 && cp != 0x2029) ||
+         (cp >= 0xe000 && cp <= 0xfffd && cp != 0xfeff) || (cp >= 0x10000 && cp <= 0x10ffff);
+}
+
+/* A double-quoted YAML string; characters it may not hold as they are are escaped. */
 static void put_str(FILE *f, const char *indent, const char *key, const char *s) {
   fprintf(f, "%s%s: \"", indent, key);
-  for (; *s; s++) {
-    unsigned char ch = (unsigned char)*s;
-    if (ch == '"' || ch == '\\')
-      fprintf(f, "\\%c", ch);
-    else if (ch < 0x20 || ch == 0x7f)
-      fprintf(f, "\\x%02x", ch);
+  const unsigned char *c = (const unsigned char *)s;
+  for (int n; *c; c += n) {
+    unsigned long cp = utf8_at(c, &n);
+    if (yaml_verbatim(cp))
+      fwrite(c, 1, (size_t)n, f);
+    else if (cp == '"' || cp == '\\')
+      fprintf(f, "\\%c", (int)cp);
     else
-      fputc(ch, f);
+      fprintf(f, cp < 0x100 ? "\\x%02lx" : cp < 0x10000 ? "\\u%04lx" : "\\U%08lx", cp);
   }
   fputs("\"\n", f);
 }
@@ -798,6 +895,7 @@ static void put_head(FILE *f, const struct case_def *c) {
   put_num(f, "  ", "end", c->t_end);
   put_num(f, "  ", "cfl", c->cfl);
   put_long(f, "  ", "max_steps", c->max_steps);
+  put_num(f, "  ", "dt_min", c->dt_min);
   fputs("output:\n", f);
   put_num(f, "  ", "interval", c->output_interval);
   put_num(f, "  ", "stats_interval", c->stats_interval);
@@ -840,6 +938,7 @@ static void put_bodies(FILE *f, const struct case_def *c) {
     put_num(f, "    ", "p_background", p->p_background);
     put_num(f, "    ", "viscosity", p->viscosity);
     put_word(f, "    ", "incompressible", BOOL_NAMES[p->incompressible != 0]);
+    put_vec(f, "    ", "density_band", p->density_band, 2);
   }
   put_list_key(f, "fluids", c->n_fluids);
   for (int i = 0; i < c->n_fluids; i++) {

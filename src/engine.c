@@ -101,10 +101,7 @@ void engine_report_particle(const struct engine *e, long i, const char *what) {
 int engine_rebuild(struct engine *e) {
   double t0 = MPI_Wtime();
   long bad = space_assign_cells(&e->space, &e->p, 0, e->p.n_owned);
-  int any = bad >= 0, any_all;
-  MPI_Allreduce(&any, &any_all, 1, MPI_INT, MPI_MAX, e->comm);
-  if (bad >= 0) engine_report_particle(e, bad, "left the domain");
-  if (any_all) return 2;
+  if (engine_check_state(e, bad)) return 2;
   int64_t lost = halo_migrate(&e->halo, &e->space, &e->p);
   if (lost >= 0) {
     if (e->rank == 0)

@@ -11,20 +11,8 @@
 #include "engine_checkpoint.h"
 #include "eos.h"
 #include "io_hdf5.h"
+#include "outdir.h"
 #include "passes.h"
-
-/* mkdir -p. Returns 0 or -1. */
-static int make_dirs(const char *path) {
-  char buf[1024];
-  snprintf(buf, sizeof(buf), "%s", path);
-  for (char *q = buf + 1; *q; q++) {
-    if (*q != '/') continue;
-    *q = 0;
-    if (mkdir(buf, 0777) && errno != EEXIST) return -1;
-    *q = '/';
-  }
-  return mkdir(buf, 0777) && errno != EEXIST ? -1 : 0;
-}
 
 /* Write text to dir/name through a temporary file. Returns 0 or -1. */
 static int write_text_file(const char *dir, const char *name, const char *text) {
@@ -102,7 +90,7 @@ int engine_open_output(struct engine *e) {
   e->case_yaml = case_to_yaml(e->c);
   int status = 0;
   if (e->rank == 0) {
-    if (make_dirs(e->outdir) || write_text_file(e->outdir, "config.yaml", e->case_yaml)) {
+    if (outdir_create(e->outdir) || write_text_file(e->outdir, "config.yaml", e->case_yaml)) {
       fprintf(stderr, "mpsph: cannot write to the output folder '%s': %s\n", e->outdir, strerror(errno));
       status = 1;
     } else {

@@ -155,15 +155,7 @@ void engine_evaluate(struct engine *e, int skip_state_halo) {
   }
 }
 
-/* The largest distance a particle may move within one step: half the cell skin, so that the
- * cells and neighbour lists built at the start of the step still hold every pair in the kernel
- * support at every stage [m]. */
-static double shift_max(const struct engine *e) { return 0.5 * (ENGINE_CELL_SKIN - 1.0) * e->kern.support; }
-
-/* 1 if slot i is a ghost of a moving wall. */
-static int moving_ghost(const struct engine *e, long i) {
-  return e->p.phase[i] == PHASE_WALL && e->c->walls[e->p.wall[i]].moving;
-}
+double engine_shift_max(const struct engine *e) { return 0.5 * (ENGINE_CELL_SKIN - 1.0) * e->kern.support; }
 
 /* |u_w|^2 of moving-wall ghost i at the current stage [m^2/s^2]. */
 static double wall_speed2(const struct engine *e, long i) {
@@ -183,7 +175,7 @@ static void reduce_first_stage(struct engine *e, double *a_max, double *adv_max)
   for (int ph = 0; ph < np; ph++) e->rho_min[ph] = INFINITY;
   for (long i = 0; i < p->n_owned; i++) {
     int ph = p->phase[i];
-    if (moving_ghost(e, i)) max2[1] = fmax(max2[1], wall_speed2(e, i));
+    if (engine_moving_ghost(e, i)) max2[1] = fmax(max2[1], wall_speed2(e, i));
     if (ph == PHASE_WALL) continue;
     double a2 = 0, w2 = 0;
     for (int d = 0; d < p->dim; d++) {
@@ -215,23 +207,34 @@ static double stable_sound_speed(const struct engine *e) {
   return c_stab;
 }
 
-/* Global time step of paper 000 Eq. 12: acoustic (with c_stab), acceleration, viscous, damper. */
-static double time_step(struct engine *e) {
+/* Lower *dt to candidate if smaller, naming the limit. */
+static void limit_by(double *dt, const char **limit, double candidate, const char *name) {
+  if (candidate < *dt) {
+    *dt = candidate;
+    *limit = name;
+  }
+}
+
+/* Global time step of paper 000 Eq. 12: acoustic (with c_stab), acceleration, viscous, damper,
+ * and the motion limit of the cell skin; *limit names the smallest term. Not yet cut to
+ * time.end. */
+static double time_step(struct engine *e, const char **limit) {
   const struct case_def *c = e->c;
   double a_max, adv_max;
   reduce_first_stage(e, &a_max, &adv_max);
   double c_eff = fmax(e->c_max, stable_sound_speed(e));
   double dt = c->cfl * e->h / c_eff;
-  if (a_max > 0) dt = fmin(dt, 0.25 * sqrt(e->h / a_max));
-  if (adv_max > 0) dt = fmin(dt, MOTION_SAFETY * shift_max(e) / adv_max);
+  *limit = c_eff > e->c_max ? "acoustic (c_stab)" : "acoustic";
+  if (a_max > 0) limit_by(&dt, limit, 0.25 * sqrt(e->h / a_max), "acceleration");
+  if (adv_max > 0) limit_by(&dt, limit, MOTION_SAFETY * engine_shift_max(e) / adv_max, "motion (cell skin)");
   for (int ph = 0; ph < c->n_phases; ph++) {
     const struct phase *f = &c->phases[ph];
-    if (c->alpha > 0) dt = fmin(dt, e->h / (c->alpha * f->c0));
-    if (f->viscosity > 0) dt = fmin(dt, 0.125 * e->h * e->h * f->rho0 / f->viscosity);
+    if (c->alpha > 0) limit_by(&dt, limit, e->h / (c->alpha * f->c0), "artificial viscosity");
+    if (f->viscosity > 0) limit_by(&dt, limit, 0.125 * e->h * e->h * f->rho0 / f->viscosity, "viscous");
     if ((e->features & FEAT_DAMPER) && f->incompressible)
-      dt = fmin(dt, c->cfl * e->h / (c->acoustic_damper * f->c0));
+      limit_by(&dt, limit, c->cfl * e->h / (c->acoustic_damper * f->c0), "acoustic damper");
   }
-  return fmin(dt, c->t_end - e->time);
+  return dt;
 }
 
 static void save_state(struct engine *e) {
@@ -258,7 +261,7 @@ static void move_ghosts(struct engine *e, const struct frame *start, double t) {
   struct frame now[CASE_MAX_WALLS];
   wall_frames(e, t, now);
   for (long i = 0; i < p->n_owned; i++) {
-    if (!moving_ghost(e, i)) continue;
+    if (!engine_moving_ghost(e, i)) continue;
     double x0[3] = {0, 0, 0}, ref[3], x[3];
     for (int d = 0; d < p->dim; d++) x0[d] = e->w.x0[d][i];
     frame_reference(&start[p->wall[i]], p->dim, x0, ref);
@@ -291,44 +294,6 @@ static void rk4_update(struct engine *e, int s, const struct frame *start) {
   if (e->moving_walls) move_ghosts(e, start, e->step_start_time + (s < 3 ? next[s] : 1.0) * e->dt);
 }
 
-/* 1 if owned particle i has moved farther since the start of the step than the cell skin allows:
- * the cells and neighbour lists of the step then no longer hold all its neighbours. */
-static int moved_too_far(const struct engine *e, long i) {
-  double limit = shift_max(e), shift2 = 0;
-  for (int d = 0; d < e->p.dim; d++) shift2 += (e->p.x[d][i] - e->w.x0[d][i]) * (e->p.x[d][i] - e->w.x0[d][i]);
-  return !(shift2 <= limit * limit);
-}
-
-/* The first owned fluid particle with a non-finite derivative, or which moved too far within the
- * step; what tripped in *what. */
-static long first_non_finite(const struct engine *e, const char **what) {
-  const struct parts *p = &e->p;
-  for (long i = 0; i < p->n_owned; i++) {
-    *what = "moved farther within one step than the cell skin allows (time step too large)";
-    if ((p->phase[i] != PHASE_WALL || moving_ghost(e, i)) && moved_too_far(e, i)) return i;
-    if (p->phase[i] == PHASE_WALL) continue;
-    *what = "drho/dt";
-    if (!isfinite(e->w.drho[i])) return i;
-    for (int d = 0; d < p->dim; d++) {
-      *what = "du/dt";
-      if (!isfinite(e->w.dv[d][i])) return i;
-      *what = "shifting velocity";
-      if (e->w.du[d] && !isfinite(e->w.du[d][i])) return i;
-    }
-  }
-  return -1;
-}
-
-/* Stop with a diagnosis if any rank holds a non-finite derivative. Returns 0 or 2. */
-static int check_finite(struct engine *e) {
-  const char *what = "";
-  long bad = first_non_finite(e, &what);
-  int any = bad >= 0;
-  MPI_Allreduce(MPI_IN_PLACE, &any, 1, MPI_INT, MPI_MAX, e->comm);
-  if (bad >= 0) engine_report_particle(e, bad, what);
-  return any ? 2 : 0;
-}
-
 int engine_step(struct engine *e) {
   static const double stage_offset[4] = {0, 0.5, 0.5, 1.0};
   struct frame start[CASE_MAX_WALLS];
@@ -342,10 +307,12 @@ int engine_step(struct engine *e) {
     e->stage_time = e->time + stage_offset[s] * e->dt;
     wall_frames(e, e->stage_time, e->frames);
     engine_evaluate(e, s == 0);
-    if (check_finite(e)) return 2;
+    if (engine_check_derivatives(e)) return 2;
     if (s == 0) {
-      e->dt = time_step(e);
-      if (!(e->dt > 0) || !isfinite(e->dt)) return 2;
+      const char *limit;
+      e->dt = time_step(e, &limit);
+      if (engine_check_dt(e, limit)) return 2;
+      e->dt = fmin(e->dt, e->c->t_end - e->time);
     }
     rk4_update(e, s, start);
   }

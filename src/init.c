@@ -9,21 +9,6 @@
 
 #define BOUNDARY_TOL 1e-9   /* relative tolerance on distances to wall boundaries */
 
-/* 1 if x lies where fluid may be: inside some tank (if any) and outside every obstacle. */
-static int fluid_accessible(const struct case_def *c, const double *x) {
-  int has_tank = 0, in_tank = 0;
-  for (int w = 0; w < c->n_walls; w++) {
-    int inside = shape_contains(&c->walls[w].shape, c->dimension, x);
-    if (c->walls[w].fluid_side == FLUID_INSIDE) {
-      has_tank = 1;
-      in_tank |= inside;
-    } else if (inside) {
-      return 0;
-    }
-  }
-  return !has_tank || in_tank;
-}
-
 /* Distance from x to the nearest wall boundary (infinity without walls). */
 static double wall_distance(const struct case_def *c, const double *x) {
   double best = INFINITY, q[3];
@@ -186,7 +171,7 @@ static int fill_fluids(const struct case_def *c, int rank, int n_ranks, struct p
     lattice_cover(&l, c->dimension, c->dx, anchor, lo, hi);
     for (long node = 0, size = lattice_size(&l); node < size; node++) {
       lattice_node(&l, node, x);
-      if (!shape_contains(s, c->dimension, x) || !fluid_accessible(c, x)) continue;
+      if (!shape_contains(s, c->dimension, x) || walls_solid_at(c, x, NULL) >= 0) continue;
       if (wall_distance(c, x) < 0.5 * c->dx * (1 - BOUNDARY_TOL)) continue;
       int j = earlier_region(c, k, x);
       if (j >= 0) {
@@ -227,67 +212,125 @@ static int tank_axis(const struct shape *s, int d, double dx, int layers, double
   return n;
 }
 
-/* Candidate ghost nodes of wall w (positions, dim per node; caller frees). A tank box gets
- * layers anchored to each of its faces, so every face has ghosts at (k + 1/2) dx whatever the
- * box size; other walls use the lattice anchored at the shape's lower corner. */
-static double *wall_nodes(const struct case_def *c, int w, double thickness, long *count) {
+/* The candidate ghost nodes of a wall, enumerated without storing them. A tank box gets layers
+ * anchored to each of its faces, so every face has ghosts at (k + 1/2) dx whatever the box size;
+ * its interior nodes are skipped (they are never ghosts). Other walls use the lattice anchored at
+ * the shape's lower corner. */
+struct wall_nodes {
+  int dim, tank, layers;
+  long n[3], count;          /* nodes per axis and in total, interior included */
+  double *axis[3];           /* tank: node coordinates along each axis */
+  struct lattice l;          /* other walls */
+};
+
+static void wall_nodes_open(struct wall_nodes *wn, const struct case_def *c, int w, double thickness) {
   const struct shape *s = &c->walls[w].shape;
-  int dim = c->dimension, layers = (int)lround(thickness / c->dx);
-  if (s->kind == SHAPE_BOX && c->walls[w].fluid_side == FLUID_INSIDE) {
-    long n[3] = {1, 1, 1};
-    double *axis[3] = {NULL, NULL, NULL};
-    for (int d = 0; d < dim; d++) {
-      axis[d] = malloc(((size_t)((s->max[d] - s->min[d]) / c->dx) + 2 * layers + 4) * sizeof(double));
-      n[d] = tank_axis(s, d, c->dx, layers, axis[d]);
+  memset(wn, 0, sizeof *wn);
+  wn->dim = c->dimension;
+  wn->layers = (int)lround(thickness / c->dx);
+  wn->tank = s->kind == SHAPE_BOX && c->walls[w].fluid_side == FLUID_INSIDE;
+  if (wn->tank) {
+    wn->n[1] = wn->n[2] = 1;
+    for (int d = 0; d < wn->dim; d++) {
+      wn->axis[d] = malloc(((size_t)((s->max[d] - s->min[d]) / c->dx) + 2 * wn->layers + 4) * sizeof(double));
+      wn->n[d] = tank_axis(s, d, c->dx, wn->layers, wn->axis[d]);
     }
-    double *nodes = malloc((size_t)(n[0] * n[1] * n[2]) * dim * sizeof(double));
-    *count = n[0] * n[1] * n[2];
-    for (long k = 0; k < *count; k++) {
-      long idx[3] = {k % n[0], (k / n[0]) % n[1], k / (n[0] * n[1])};
-      for (int d = 0; d < dim; d++) nodes[k * dim + d] = axis[d][idx[d]];
-    }
-    for (int d = 0; d < dim; d++) free(axis[d]);
-    return nodes;
+    wn->count = wn->n[0] * wn->n[1] * wn->n[2];
+    return;
   }
   double lo[3], hi[3], anchor[3];
-  struct lattice l;
-  shape_bbox(s, dim, thickness, lo, hi);
-  shape_anchor(s, dim, anchor);
-  lattice_cover(&l, dim, c->dx, anchor, lo, hi);
-  *count = lattice_size(&l);
-  double *nodes = malloc((size_t)*count * dim * sizeof(double)), x[3];
-  for (long k = 0; k < *count; k++) {
-    lattice_node(&l, k, x);
-    for (int d = 0; d < dim; d++) nodes[k * dim + d] = x[d];
+  shape_bbox(s, wn->dim, thickness, lo, hi);
+  shape_anchor(s, wn->dim, anchor);
+  lattice_cover(&wn->l, wn->dim, c->dx, anchor, lo, hi);
+  wn->count = lattice_size(&wn->l);
+}
+
+/* 1 if index i of an axis with n tank nodes is an interior (not a layer) node. */
+static int tank_interior(const struct wall_nodes *wn, long i, long n) {
+  return i >= wn->layers && i < n - wn->layers;
+}
+
+/* The first candidate node at or after node k (tank interior rows skipped). */
+static long wall_nodes_skip(const struct wall_nodes *wn, long k) {
+  if (!wn->tank) return k;
+  long ix = k % wn->n[0], iy = (k / wn->n[0]) % wn->n[1], iz = k / (wn->n[0] * wn->n[1]);
+  int interior_row = tank_interior(wn, iy, wn->n[1]) && (wn->dim == 2 || tank_interior(wn, iz, wn->n[2]));
+  return interior_row && tank_interior(wn, ix, wn->n[0]) ? k - ix + wn->n[0] - wn->layers : k;
+}
+
+/* Position of node k. */
+static void wall_nodes_get(const struct wall_nodes *wn, long k, double *x) {
+  if (!wn->tank) {
+    lattice_node(&wn->l, k, x);
+    return;
   }
-  return nodes;
+  long idx[3] = {k % wn->n[0], (k / wn->n[0]) % wn->n[1], k / (wn->n[0] * wn->n[1])};
+  for (int d = 0; d < wn->dim; d++) x[d] = wn->axis[d][idx[d]];
+}
+
+static void wall_nodes_close(struct wall_nodes *wn) {
+  for (int d = 0; d < 3; d++) free(wn->axis[d]);
 }
 
 static int fill_walls(const struct case_def *c, double thickness, int rank, int n_ranks,
                       struct parts *p, struct init_counts *n, int64_t *ordinal, char *err,
                       size_t err_len) {
-  int dim = c->dimension;
-  for (int w = 0; w < c->n_walls; w++) {
-    long count;
-    double *nodes = wall_nodes(c, w, thickness, &count), x[3] = {0, 0, 0};
-    for (long k = 0; k < count; k++) {
-      for (int d = 0; d < dim; d++) x[d] = nodes[k * dim + d];
-      if (!ghost_of(c, w, thickness, x) || fluid_accessible(c, x)) continue;
+  int dim = c->dimension, status = 0;
+  for (int w = 0; w < c->n_walls && !status; w++) {
+    struct wall_nodes wn;
+    double x[3] = {0, 0, 0};
+    wall_nodes_open(&wn, c, w, thickness);
+    for (long k = wall_nodes_skip(&wn, 0); k < wn.count && !status; k = wall_nodes_skip(&wn, k + 1)) {
+      wall_nodes_get(&wn, k, x);
+      if (!ghost_of(c, w, thickness, x) || walls_solid_at(c, x, NULL) < 0) continue;
       if (earlier_wall(c, w, thickness, x) >= 0) continue;
       if (!inside_domain(c, x)) {
         snprintf(err, err_len, "%s: walls.%d: its %d ghost layers (%g m thick) reach (%g, %g%s) outside "
                  "the domain: the domain must extend at least %g m beyond the wall", c->source_file, w,
-                 (int)lround(thickness / c->dx), thickness, x[0], x[1], dim == 3 ? ", ..." : "", thickness);
-        free(nodes);
-        return 1;
+                 wn.layers, thickness, x[0], x[1], dim == 3 ? ", ..." : "", thickness);
+        status = 1;
+        break;
       }
       if (p && *ordinal % n_ranks == rank) add_ghost(c, w, x, *ordinal, p);
       (*ordinal)++;
       n->n_wall++;
     }
-    free(nodes);
+    wall_nodes_close(&wn);
   }
-  return 0;
+  return status;
+}
+
+/* Nodes of a lattice of spacing dx covering the bounding box of s grown by margin (a bound). */
+static double lattice_bound(const struct shape *s, int dim, double margin, double dx) {
+  double lo[3], hi[3], n = 1;
+  shape_bbox(s, dim, margin, lo, hi);
+  for (int d = 0; d < dim; d++) n *= (hi[d] - lo[d]) / dx + 2;
+  return n;
+}
+
+/* Nodes of the ghost layers of a tank box (a bound): all its axis nodes less the interior ones. */
+static double tank_bound(const struct shape *s, int dim, int layers, double dx) {
+  double all = 1, interior = 1;
+  for (int d = 0; d < dim; d++) {
+    double n = (s->max[d] - s->min[d]) / dx + 1;
+    all *= n + 2 * layers;
+    interior *= n;
+  }
+  return all - interior;
+}
+
+double init_visit_count(const struct case_def *c, double support) {
+  int dim = c->dimension, layers = init_wall_layers(c, support);
+  double total = 0;
+  for (int k = 0; k < c->n_fluids; k++) total += lattice_bound(&c->fluids[k].shape, dim, 0, c->dx);
+  for (int w = 0; w < c->n_walls; w++) {
+    const struct shape *s = &c->walls[w].shape;
+    if (s->kind == SHAPE_BOX && c->walls[w].fluid_side == FLUID_INSIDE)
+      total += tank_bound(s, dim, layers, c->dx);
+    else
+      total += lattice_bound(s, dim, layers * c->dx, c->dx);
+  }
+  return isnan(total) ? INFINITY : total;
 }
 
 int init_particles(const struct case_def *c, double support, int rank, int n_ranks,

@@ -5,8 +5,7 @@
 #include <string.h>
 #include "case_load.h"
 #include "engine.h"
-#include "init.h"
-#include "kernel.h"
+#include "preflight.h"
 #include "signal_stop.h"
 
 #define MAX_SETS 256
@@ -55,26 +54,6 @@ static int parse_args(int argc, char **argv, struct args *a, char *err, size_t l
   return 0;
 }
 
-/* mpsph check: print the resolved case and the particle counts (rank 0 only). */
-static int check_case(const struct case_def *c) {
-  struct kernel k;
-  struct init_counts n;
-  char err[1024];
-  kernel_init(&k, c->kernel, c->dimension, c->h_over_dx * c->dx);
-  if (init_particles(c, k.support, 0, 1, NULL, &n, err, sizeof(err))) {
-    fprintf(stderr, "mpsph: %s\n", err);
-    return 1;
-  }
-  char *yaml = case_to_yaml(c);
-  printf("%s", yaml);
-  free(yaml);
-  printf("# particles: %ld fluid", n.n_fluid);
-  for (int ph = 0; ph < c->n_phases; ph++) printf(" (%s %ld)", c->phases[ph].name, n.fluid[ph]);
-  printf(", %ld wall (%d layers); smoothing length %g m, kernel support %g m\n", n.n_wall,
-         init_wall_layers(c, k.support), k.h, k.support);
-  return 0;
-}
-
 /* The schemes this version implements; anything else is refused with a reason. */
 static int supported(const struct case_def *c, char *err, size_t len) {
 #ifdef MPSPH_SINGLE_PHASE
@@ -91,6 +70,7 @@ static int run_case(const struct case_def *c, const struct args *a) {
   snprintf(defdir, sizeof(defdir), "runs/%s", c->name);
   const char *outdir = a->outdir ? a->outdir : defdir;
   snprintf(restart, sizeof(restart), "%s/checkpoint.h5", outdir);
+  if (preflight_run(c, outdir, MPI_COMM_WORLD)) return 1;
   struct engine e;
   int status = engine_init(&e, c, outdir, !a->restart ? NULL : a->restart_path ? a->restart_path : restart,
                            MPI_COMM_WORLD);
@@ -114,7 +94,7 @@ int main(int argc, char **argv) {
   if (!status) status = case_load(a.case_path, a.n_sets, a.sets, &c, err, sizeof(err));
   if (!status) status = supported(&c, err, sizeof(err));
   if (status && rank == 0) fprintf(stderr, "mpsph: %s\n", err);
-  if (!status) status = !strcmp(a.command, "check") ? (rank == 0 ? check_case(&c) : 0) : run_case(&c, &a);
+  if (!status) status = !strcmp(a.command, "check") ? (rank == 0 ? preflight_check(&c) : 0) : run_case(&c, &a);
   MPI_Finalize();
   return status;
 }

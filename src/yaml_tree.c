@@ -1,7 +1,6 @@
 /* yaml_tree.c — build a node tree from libyaml parser events; apply key.path=value overrides. */
 #include "yaml_tree.h"
 
-#include <errno.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -222,36 +221,20 @@ static struct ynode *read_stream(struct reader *rd, const char *path) {
   return NULL;
 }
 
-static struct ynode *parse_text(const char *text, const char *source, int line, const char *path,
-                                char *err, size_t err_len) {
+static struct ynode *parse_text(const char *text, size_t len, const char *source, int line,
+                                const char *path, char *err, size_t err_len) {
   struct reader rd = {.source = source, .fixed_line = line, .err = err, .err_len = err_len};
   if (!yaml_parser_initialize(&rd.parser)) must(NULL);
-  yaml_parser_set_input_string(&rd.parser, (const unsigned char *)text, strlen(text));
+  yaml_parser_set_input_string(&rd.parser, (const unsigned char *)text, len);
   struct ynode *root = read_stream(&rd, path);
   yaml_parser_delete(&rd.parser);
   return root;
 }
 
-/* Parse YAML text into a tree. */
-struct ynode *ytree_parse(const char *text, const char *source, int line, char *err,
+/* Parse len bytes of YAML text into a tree. */
+struct ynode *ytree_parse(const char *text, size_t len, const char *source, int line, char *err,
                           size_t err_len) {
-  return parse_text(text, source, line, "", err, err_len);
-}
-
-/* Parse the YAML file `path` into a tree. */
-struct ynode *ytree_load(const char *path, char *err, size_t err_len) {
-  FILE *f = fopen(path, "rb");
-  if (!f) {
-    if (err_len) snprintf(err, err_len, "%s: cannot open the file: %s", path, strerror(errno));
-    return NULL;
-  }
-  struct reader rd = {.source = path, .err = err, .err_len = err_len};
-  if (!yaml_parser_initialize(&rd.parser)) must(NULL);
-  yaml_parser_set_input_file(&rd.parser, f);
-  struct ynode *root = read_stream(&rd, "");
-  yaml_parser_delete(&rd.parser);
-  fclose(f);
-  return root;
+  return parse_text(text, len, source, line, "", err, err_len);
 }
 
 /* ---- overrides ---- */
@@ -307,7 +290,7 @@ int ytree_set(struct ynode *root, const char *assignment, int line, char *err, s
     return 1;
   }
   char *path = must(strndup(assignment, (size_t)(eq - assignment)));
-  struct ynode *value = parse_text(eq + 1, "--set", line, path, err, err_len);
+  struct ynode *value = parse_text(eq + 1, strlen(eq + 1), "--set", line, path, err, err_len);
   struct yentry *e = value ? walk(root, path, line, err, err_len) : NULL;
   if (e) {
     ytree_free(e->value);

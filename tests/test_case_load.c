@@ -99,6 +99,11 @@ static void test_defaults(void) {
   CHECK(c.initial_pressure == INIT_PRESSURE_HYDROSTATIC, "initial pressure");
   CHECK_CLOSE(c.repartition_threshold, 0.1, 0, "repartition_threshold");
   CHECK(c.repartition_every == 0 && c.max_steps == 0, "counts");
+  CHECK(c.phases[0].density_band[0] == 0.5 && c.phases[0].density_band[1] == 2.0,
+        "liquid density band default");
+  CHECK(c.phases[1].density_band[0] == 0.1 && c.phases[1].density_band[1] == 10.0,
+        "gas density band default");
+  CHECK_CLOSE(c.dt_min, 1e-6 * 1.0 * 1.33 * 0.02 / 340, 1e-22, "dt_min default: 1e-6 CFL h / max c0");
   CHECK(load(variant(13, "kernel: wendland-c2"), 0, NULL, &c) == 0, "wendland: %s", err);
   CHECK_CLOSE(c.h_over_dx, 2.0, 0, "h_over_dx default (wendland-c2)");
 }
@@ -127,6 +132,8 @@ static void test_value_errors(void) {
                "got the string \"0.1\", expected a number > 0");
   expect_error(variant(3, "resolution: {dx: .inf}"), 0, NULL, "case.yaml:3: resolution.dx: ",
                "expected a number > 0");
+  expect_error(variant(3, "resolution: {dx: 0.1, h_over_dx: 11}"), 0, NULL,
+               "case.yaml:3: resolution.h_over_dx: ", "got '11', expected a number > 0 and <= 10");
   expect_error(variant(4, "time: {end: 1, cfl: 5}"), 0, NULL, "case.yaml:4: time.cfl: ",
                "got '5', expected a number > 0 and <= 2");
   expect_error(variant(4, "time: {end: 1, max_steps: 1.5}"), 0, NULL, "case.yaml:4: time.max_steps",
@@ -140,6 +147,13 @@ static void test_value_errors(void) {
                "expected a name of 1 to 63 characters from [A-Za-z0-9._-]");
   expect_error(variant(13, "resolution: {dx: 0.1}"), 0, NULL, "case.yaml:13: resolution: duplicate",
                "expected each key once");
+  expect_error(variant(8, "  - {name: air, rho0: 1, c0: 340, density_band: [1.2, 2]}"), 0, NULL,
+               "case.yaml:8: phases.1.density_band: got [1.2, 2]",
+               "expected a list [min_ratio, max_ratio] with 0 <= min_ratio < 1 < max_ratio");
+  expect_error(variant(8, "  - {name: air, rho0: 1, c0: 340, density_band: 0.5}"), 0, NULL,
+               "case.yaml:8: phases.1.density_band: got '0.5'", "[min_ratio, max_ratio]");
+  expect_error(variant(4, "time: {end: 1, dt_min: 0}"), 0, NULL, "case.yaml:4: time.dt_min: got '0'",
+               "expected a number > 0");
 }
 
 static void test_shape_errors(void) {
@@ -168,9 +182,26 @@ static void test_malformed(void) {
                "expected valid YAML");
   expect_error(variant(13, "  bad: indent"), 0, NULL, "case.yaml:13: probes: malformed YAML", "YAML");
   expect_error(variant(13, "gravity: *g"), 0, NULL, "case.yaml:", "alias");
+  expect_error(variant(1, "name: \"two\\nlines\""), 0, NULL, "case.yaml:1: name: ",
+               "got the string \"two\\nlines\", expected a name");
   struct case_def c;
   CHECK(case_load("/nonexistent/case.yaml", 0, NULL, &c, err, sizeof err) == 1 &&
             strstr(err, "/nonexistent/case.yaml: cannot open") != NULL, "missing file: %s", err);
+  CHECK(case_load(dir, 0, NULL, &c, err, sizeof err) == 1 && strstr(err, "cannot read the file"),
+        "a directory: %s", err);
+}
+
+/* The same text loads from memory, named by its source; a NUL byte is malformed YAML. */
+static void test_string(void) {
+  struct case_def c;
+  const char *text = variant(0, "");
+  CHECK(case_load_string(text, strlen(text), "memory", 0, NULL, &c, err, sizeof err) == 0,
+        "from memory: %s", err);
+  CHECK(strcmp(c.source_file, "memory") == 0 && c.dx == 0.02, "source and content");
+  CHECK(case_load_string(text, 4, "memory", 0, NULL, &c, err, sizeof err) == 1 &&
+            strstr(err, "memory:") != NULL, "only the given length is read: %s", err);
+  CHECK(case_load_string("name: a\0b\n", 11, "memory", 0, NULL, &c, err, sizeof err) == 1 &&
+            strstr(err, "memory:1: malformed YAML") != NULL, "NUL byte: %s", err);
 }
 
 static void test_set(void) {
@@ -214,14 +245,14 @@ static const char ROUND_TRIP[] =
     "kernel: wendland-c2\n"
     "resolution: {dx: 0.0033333333333333335, h_over_dx: 1.7}\n"
     "gravity: [0.1, -9.81]\n"
-    "time: {end: 2.5, cfl: 0.3, max_steps: 12345}\n"
+    "time: {end: 2.5, cfl: 0.3, max_steps: 12345, dt_min: 1e-7}\n"
     "output: {interval: 0.1, stats_interval: 0.003, probes_interval: 0.007, "
     "progress_interval: 2.5}\n"
     "domain: {min: [-0.1, -0.2], max: [3.2, 2.1]}\n"
     "phases:\n"
     "  - {name: water, rho0: 1000, c0: 31.3, p_background: 12.5, viscosity: 1e-3,"
     " incompressible: true}\n"
-    "  - {name: air, rho0: 1.2, c0: 340, gamma: 1.4}\n"
+    "  - {name: air, rho0: 1.2, c0: 340, gamma: 1.4, density_band: [0, 1e6]}\n"
     "  - {name: oil, rho0: 870.5, c0: 45, viscosity: 0.05}\n"
     "fluids:\n"
     "  - {phase: water, box: {min: [0, 0], max: [1, 0.6]}, velocity: [0.5, -0.25]}\n"
@@ -260,6 +291,7 @@ static void same_lists(const struct case_def *a, const struct case_def *b) {
     CHECK(strcmp(p->name, q->name) == 0 && p->incompressible == q->incompressible, "phase %d", i);
     CHECK(p->rho0 == q->rho0 && p->c0 == q->c0 && p->gamma == q->gamma, "phase %d EOS", i);
     CHECK(p->p_background == q->p_background && p->viscosity == q->viscosity, "phase %d", i);
+    same_vec(p->density_band, q->density_band, 2, "density_band");
   }
   for (int i = 0; i < a->n_fluids; i++) {
     CHECK(a->fluids[i].phase == b->fluids[i].phase, "fluid %d phase", i);
@@ -285,6 +317,7 @@ static void same_case(const struct case_def *a, const struct case_def *b) {
   CHECK(a->dx == b->dx && a->h_over_dx == b->h_over_dx, "resolution");
   same_vec(a->gravity, b->gravity, 3, "gravity");
   CHECK(a->t_end == b->t_end && a->cfl == b->cfl && a->max_steps == b->max_steps, "time");
+  CHECK(a->dt_min == b->dt_min, "dt_min");
   CHECK(a->output_interval == b->output_interval && a->stats_interval == b->stats_interval, "out");
   CHECK(a->probes_interval == b->probes_interval, "probes_interval");
   CHECK(a->progress_interval == b->progress_interval, "progress_interval");
@@ -318,6 +351,7 @@ static void test_round_trip(void) {
   CHECK(strcmp(c.description, "Tank: \"quoted\" # not a comment\tand a tab") == 0, "escapes");
   CHECK(c.fluids[1].phase == 2 && c.fluids[2].shape.n_vertices == 4, "fluid items");
   CHECK(c.walls[0].slip == SLIP_NO && c.walls[1].fluid_side == FLUID_OUTSIDE, "wall items");
+  CHECK(c.dt_min == 1e-7 && c.phases[1].density_band[1] == 1e6, "checks given");
   char *yaml = case_to_yaml(&c);
   CHECK(strstr(yaml, "\ndomain:\n  min: [-0.1, -0.2]\n  max: [3.2, 2.1]\n") != NULL,
         "block style with flow vectors:\n%s", yaml);
@@ -327,6 +361,13 @@ static void test_round_trip(void) {
              "gravity: [0, 0, -9.81]\ndomain: {min: [0, 0, 0], max: [1, 1, 1]}\n"
              "phases: [{name: w, rho0: 1000, c0: 20}]\n"
              "fluids: [{phase: w, circle: {centre: [0.5, 0.5, 0.5], radius: 0.25}}]\n");
+  round_trip("name: u\ndimension: 2\nresolution: {dx: 0.1}\ntime: {end: 1}\n"
+             "description: \"line\\u2028sep\\x85nel\\u2029par\\x80c1\\ufeffbom \\U0001F30A\"\n"
+             "domain: {min: [0, 0], max: [1, 1]}\nphases: [{name: w, rho0: 1000, c0: 20}]\n");
+  expect_error("name: t\ndimension: 2\nresolution: {dx: 1e-300}\ntime: {end: 1}\n"
+               "domain: {min: [0, 0], max: [1, 1]}\nphases: [{name: w, rho0: 1, c0: 1e300}]\n", 0,
+               NULL, "case.yaml:4: time.dt_min: got the default 0 computed from the other keys",
+               "expected a number > 0: set the key");
   expect_error("name: p\ndimension: 3\nresolution: {dx: 0.1}\ntime: {end: 1}\n"
                "domain: {min: [0, 0, 0], max: [1, 1, 1]}\nphases: [{name: w, rho0: 1, c0: 1}]\n"
                "walls: [{polygon: [[0, 0], [1, 0], [0, 1]]}]\n", 0, NULL,
@@ -367,6 +408,7 @@ int main(void) {
   test_value_errors();
   test_shape_errors();
   test_malformed();
+  test_string();
   test_set();
   test_round_trip();
   test_motion();

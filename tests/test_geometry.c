@@ -72,10 +72,31 @@ static void check_lattice(void) {
   CHECK(inside == 50, "a 1 x 0.5 box at dx 0.1 holds 50 nodes, got %ld", inside);
 }
 
+/* A tank made of two boxes (an L) with a disc obstacle in the first. */
+static void check_walls_solid(void) {
+  struct case_def c = {.dimension = 2, .n_walls = 3};
+  c.walls[0].shape = box2(0, 0, 1, 1);
+  c.walls[1].shape = (struct shape){.kind = SHAPE_CIRCLE, .centre = {0.5, 0.5, 0}, .radius = 0.1};
+  c.walls[1].fluid_side = FLUID_OUTSIDE;
+  c.walls[2].shape = box2(1, 0, 2, 0.5);
+  double fluid[2] = {0.2, 0.2}, arm[2] = {1.5, 0.2}, obstacle[2] = {0.5, 0.55}, out[2] = {1.5, 0.8};
+  double right[2] = {2.25, 0.2}, depth = -1;
+  CHECK(walls_solid_at(&c, fluid, &depth) == -1 && depth == -1, "fluid in the first tank");
+  CHECK(walls_solid_at(&c, arm, &depth) == -1, "fluid in the second tank");
+  CHECK(walls_solid_at(&c, obstacle, &depth) == 1, "inside the obstacle");
+  CHECK_CLOSE(depth, 0.05, 1e-14, "depth inside the obstacle");
+  CHECK(walls_solid_at(&c, out, &depth) == 2, "outside both tanks: the nearer one");
+  CHECK_CLOSE(depth, 0.3, 1e-14, "depth outside the tanks");
+  CHECK(walls_solid_at(&c, right, NULL) == 2, "no depth asked");
+  c.n_walls = 0;
+  CHECK(walls_solid_at(&c, out, &depth) == -1, "no walls: fluid everywhere");
+}
+
 int main(void) {
   check_box_and_polygon();
   check_circle();
   check_concave_polygon();
   check_lattice();
+  check_walls_solid();
   return check_report("test_geometry");
 }

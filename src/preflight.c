@@ -1,0 +1,156 @@
+/* preflight.c — the checks of `run` before any computation (output folder, memory) and the
+ * `check` command. The particles are counted only when an upper bound on their number (the
+ * lattice nodes that particle generation visits) does not settle whether they fit, and never
+ * for a case far beyond the memory available, so that an absurd case is refused at once. */
+#include "preflight.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include "case_load.h"
+#include "init.h"
+#include "kernel.h"
+#include "mem_estimate.h"
+#include "outdir.h"
+
+#define COUNT_GUARD 10.0   /* a bound needing this many times the memory available: not counted */
+#define ERR_LEN 1024
+
+/* The particle count of a case for the memory estimate: exact, or the bound. */
+struct sizing {
+  double support;            /* kernel support [m] */
+  double n;                  /* particles (fluid + wall) */
+  int counted;               /* n and counts are exact; else n is the bound */
+  struct init_counts counts;
+};
+
+/* Size case c for n_ranks ranks with `available` bytes each. The particles are counted when the
+ * bound needs at most COUNT_GUARD times the memory available, and either always is set or the
+ * bound does not fit. Returns 0, or 1 with particle generation's message. */
+static int size_case(const struct case_def *c, int n_ranks, double available, int always,
+                     struct sizing *s, char *err, size_t len) {
+  struct kernel k;
+  kernel_init(&k, c->kernel, c->dimension, c->h_over_dx * c->dx);
+  s->support = k.support;
+  s->n = init_visit_count(c, k.support);
+  s->counted = 0;
+  double bound_bytes = mem_estimate_rank(c, k.support, s->n, n_ranks).total;
+  if (bound_bytes > COUNT_GUARD * available || (bound_bytes <= available && !always)) return 0;
+  if (init_particles(c, k.support, 0, 1, NULL, &s->counts, err, len)) return 1;
+  s->n = (double)(s->counts.n_fluid + s->counts.n_wall);
+  s->counted = 1;
+  return 0;
+}
+
+/* "1234 particles (1000 fluid, 234 wall)" or "up to 1.2e+10 particles (...)". */
+static void describe_count(const struct sizing *s, char *buf, size_t len) {
+  if (s->counted)
+    snprintf(buf, len, "%ld particles (%ld fluid, %ld wall)", s->counts.n_fluid + s->counts.n_wall,
+             s->counts.n_fluid, s->counts.n_wall);
+  else
+    snprintf(buf, len, "up to %.3g particles (the lattice nodes of the fluid regions and wall "
+             "layers; not counted)", s->n);
+}
+
+/* The memory of rank 0's node per rank on it, the minimum over all nodes [bytes]; -1 if unknown. */
+static double available_per_rank(MPI_Comm comm, int *ranks_on_node) {
+  MPI_Comm node;
+  MPI_Comm_split_type(comm, MPI_COMM_TYPE_SHARED, 0, MPI_INFO_NULL, &node);
+  MPI_Comm_size(node, ranks_on_node);
+  MPI_Comm_free(&node);
+  double node_bytes = mem_node_available();
+  double mine = node_bytes < 0 ? -1 : node_bytes / *ranks_on_node, least;
+  MPI_Allreduce(&mine, &least, 1, MPI_DOUBLE, MPI_MIN, comm);
+  return least;
+}
+
+static int bad_memory_variable(char *err, size_t len) {
+  snprintf(err, len, "MPSPH_MEMORY_AVAILABLE: got '%s', expected a number of bytes > 0",
+           getenv("MPSPH_MEMORY_AVAILABLE"));
+  return 1;
+}
+
+/* Rank 0: 1 with the numbers in err if case c needs more than `available` bytes per rank. */
+static int memory_verdict(const struct case_def *c, int n_ranks, double available, int per_node,
+                          char *err, size_t len) {
+  struct sizing s;
+  char what[160];
+  if (available < 0) return bad_memory_variable(err, len);
+  if (size_case(c, n_ranks, available, 0, &s, err, len)) return 1;
+  struct mem_estimate m = mem_estimate_rank(c, s.support, s.n, n_ranks);
+  if (m.total <= available) return 0;
+  describe_count(&s, what, sizeof what);
+  snprintf(err, len, "not enough memory: %s need about %.3g GB per rank on %d rank%s (%.0f bytes "
+           "per particle with the halo, %.0f MB per process, %.3g GB of cells), but %.3g GB are "
+           "available per rank (the node's available memory over its %d rank%s): use more nodes or "
+           "a coarser resolution.dx", what, m.total / 1e9, n_ranks, n_ranks == 1 ? "" : "s",
+           m.bytes_per_particle, m.process / 1e6, m.cells / 1e9, available / 1e9, per_node,
+           per_node == 1 ? "" : "s");
+  return 1;
+}
+
+/* Status of rank 0 to all ranks; its message printed by rank 0. */
+static int verdict(int status, const char *err, int rank, MPI_Comm comm) {
+  MPI_Bcast(&status, 1, MPI_INT, 0, comm);
+  if (status && rank == 0) fprintf(stderr, "mpsph: %s\n", err);
+  return status;
+}
+
+int preflight_run(const struct case_def *c, const char *outdir, MPI_Comm comm) {
+  int rank, n_ranks, per_node, status = 0;
+  char err[ERR_LEN];
+  MPI_Comm_rank(comm, &rank);
+  MPI_Comm_size(comm, &n_ranks);
+  if (rank == 0) status = outdir_probe(outdir, err, sizeof err);
+  if (verdict(status, err, rank, comm)) return 1;
+  double available = available_per_rank(comm, &per_node);
+  if (rank == 0) status = memory_verdict(c, n_ranks, available, per_node, err, sizeof err);
+  return verdict(status, err, rank, comm);
+}
+
+/* A memory size in MB below 1 GB, else in GB. */
+static const char *bytes_text(double bytes, char *buf, size_t len) {
+  if (bytes < 1e9) snprintf(buf, len, "%.1f MB", bytes / 1e6);
+  else snprintf(buf, len, "%.3g GB", bytes / 1e9);
+  return buf;
+}
+
+static void print_counts(const struct case_def *c, const struct sizing *s) {
+  if (!s->counted) {
+    printf("# particles: up to %.3g (the lattice nodes of the fluid regions and wall layers; not "
+           "counted, it would take too long)", s->n);
+  } else {
+    printf("# particles: %ld fluid", s->counts.n_fluid);
+    for (int ph = 0; ph < c->n_phases; ph++)
+      printf(" (%s %ld)", c->phases[ph].name, s->counts.fluid[ph]);
+    printf(", %ld wall (%d layers)", s->counts.n_wall, init_wall_layers(c, s->support));
+  }
+  printf("; smoothing length %g m, kernel support %g m\n", c->h_over_dx * c->dx, s->support);
+}
+
+static void print_memory(const struct case_def *c, const struct sizing *s, double available) {
+  struct mem_estimate m = mem_estimate_rank(c, s->support, s->n, 1);
+  char need[32], cells[32], have[32];
+  printf("# memory: about %s on one rank (%.0f bytes per particle, %.0f MB per process, %s of "
+         "cells); %s available on this machine%s\n", bytes_text(m.total, need, sizeof need),
+         m.bytes_per_particle, m.process / 1e6, bytes_text(m.cells, cells, sizeof cells),
+         bytes_text(available, have, sizeof have), m.total > available ? ": more than it has" : "");
+}
+
+int preflight_check(const struct case_def *c) {
+  struct sizing s;
+  char err[ERR_LEN];
+  double available = mem_node_available();
+  int status = available < 0 ? bad_memory_variable(err, sizeof err) : 0;
+  if (!status) status = size_case(c, 1, available, 1, &s, err, sizeof err);
+  if (status) {
+    fprintf(stderr, "mpsph: %s\n", err);
+    return 1;
+  }
+  char *yaml = case_to_yaml(c);
+  printf("%s", yaml);
+  free(yaml);
+  print_counts(c, &s);
+  print_memory(c, &s, available);
+  return 0;
+}

@@ -1,0 +1,95 @@
+/* test_preflight.c — the pieces of the checks before a run: the bound on the particle count
+ * (never below the count, not far above it for the cases of the repository), the memory
+ * estimate per rank, the memory available, and the output-folder probe leaving nothing behind. */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "case_load.h"
+#include "check.h"
+#include "init.h"
+#include "kernel.h"
+#include "mem_estimate.h"
+#include "outdir.h"
+
+static const char *const CASES[] = {
+    "cases/dambreak-1phase/case.yaml", "cases/dambreak-2phase/case.yaml",
+    "cases/hydrostatic-1phase/case.yaml", "cases/hydrostatic-2phase/case.yaml",
+    "cases/oscillating-drop/case.yaml", "cases/oscillating-drop-2fluid/case.yaml",
+    "tests/cases/hydrostatic-3d.yaml", NULL};
+
+static void check_bounds(void) {
+  for (int i = 0; CASES[i]; i++) {
+    struct case_def c;
+    struct kernel k;
+    struct init_counts n;
+    char err[1024];
+    CHECK(case_load(CASES[i], 0, NULL, &c, err, sizeof err) == 0, "%s: %s", CASES[i], err);
+    kernel_init(&k, c.kernel, c.dimension, c.h_over_dx * c.dx);
+    CHECK(init_particles(&c, k.support, 0, 1, NULL, &n, err, sizeof err) == 0, "%s", err);
+    double count = (double)(n.n_fluid + n.n_wall), bound = init_visit_count(&c, k.support);
+    CHECK(count <= bound && bound <= 12 * count, "%s: bound %g for %g particles", CASES[i], bound,
+          count);
+  }
+}
+
+static void check_estimate(void) {
+  struct case_def c;
+  char err[1024];
+  CHECK(case_load(CASES[2], 0, NULL, &c, err, sizeof err) == 0, "%s", err);
+  double support = 3 * c.h_over_dx * c.dx;
+  struct mem_estimate one = mem_estimate_rank(&c, support, 1e6, 1);
+  CHECK(one.particles == 1e6, "one rank holds every particle and no halo: %g", one.particles);
+  CHECK(one.total == one.process + one.cells + 1e6 * one.bytes_per_particle, "total");
+  CHECK(one.cells > 0 && one.bytes_per_particle == 350, "cells %g", one.cells);
+  struct mem_estimate four = mem_estimate_rank(&c, support, 1e6, 4);
+  CHECK(four.particles > 2.5e5 && four.particles < 5e5, "a quarter plus a halo: %g", four.particles);
+  struct mem_estimate small = mem_estimate_rank(&c, support, 100, 4);
+  CHECK(small.particles <= 100, "the halo is at most the other ranks' particles: %g",
+        small.particles);
+}
+
+static void check_available(void) {
+  setenv("MPSPH_MEMORY_AVAILABLE", "2e9", 1);
+  CHECK(mem_node_available() == 2e9, "from the variable");
+  setenv("MPSPH_MEMORY_AVAILABLE", "2GB", 1);
+  CHECK(mem_node_available() == -1, "not a number");
+  unsetenv("MPSPH_MEMORY_AVAILABLE");
+  CHECK(mem_node_available() > 1e8, "MemAvailable: %g", mem_node_available());
+}
+
+static void check_probe(void) {
+  char dir[64] = "/tmp/test_preflight.XXXXXX", path[256], err[512];
+  struct stat st;
+  CHECK(mkdtemp(dir) != NULL, "temporary folder");
+  snprintf(path, sizeof path, "%s/a/b/", dir);
+  CHECK(outdir_probe(path, err, sizeof err) == 0, "a new nested folder: %s", err);
+  snprintf(path, sizeof path, "%s/a", dir);
+  CHECK(stat(path, &st) != 0, "the probe left nothing behind");
+  CHECK(outdir_probe(dir, err, sizeof err) == 0 && stat(dir, &st) == 0, "an existing folder stays");
+  snprintf(path, sizeof path, "%s/file", dir);
+  FILE *f = fopen(path, "w");
+  fclose(f);
+  snprintf(path, sizeof path, "%s/file/x/y", dir);
+  CHECK(outdir_probe(path, err, sizeof err) == 1 && strstr(err, "Not a directory") != NULL,
+        "through a file: %s", err);
+  CHECK(outdir_create(path) == -1, "outdir_create through a file fails");
+  snprintf(path, sizeof path, "%s/c/d", dir);
+  CHECK(outdir_create(path) == 0 && stat(path, &st) == 0 && S_ISDIR(st.st_mode), "mkdir -p");
+  rmdir(path);
+  snprintf(path, sizeof path, "%s/c", dir);
+  rmdir(path);
+  snprintf(path, sizeof path, "%s/file", dir);
+  unlink(path);
+  CHECK(rmdir(dir) == 0, "only what the test made was left");
+}
+
+int main(void) {
+  check_bounds();
+  check_estimate();
+  check_available();
+  check_probe();
+  return check_report("test_preflight");
+}
