@@ -17,8 +17,9 @@ double shape_ray_length(const struct shape *s, int dim, const double *x, const d
 /** The wall of case c whose solid holds x, or -1 where fluid may be. The solid is everything
  *  outside the tanks (walls with fluid_side inside) when the case has a tank, and the inside of
  *  each obstacle (fluid_side outside); shapes are closed. Outside every tank the nearest tank is
- *  returned. depth (may be NULL) receives the distance from x to that wall's boundary [m]. */
-int walls_solid_at(const struct case_def *c, const double *x, double *depth);
+ *  returned. depth (may be NULL) receives the distance from x to that wall's boundary [m].
+ *  frames (may be NULL: every wall where the case puts it) holds the moving walls' frames now. */
+int walls_solid_at(const struct case_def *c, const struct frame *frames, const double *x, double *depth);
 
 /** Axis-aligned bounding box of s, grown by `margin` on every side. */
 void shape_bbox(const struct shape *s, int dim, double margin, double *lo, double *hi);

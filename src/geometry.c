@@ -97,20 +97,22 @@ double shape_nearest_boundary(const struct shape *s, int dim, const double *x, d
   }
 }
 
-int walls_solid_at(const struct case_def *c, const double *x, double *depth) {
+int walls_solid_at(const struct case_def *c, const struct frame *frames, const double *x, double *depth) {
   int dim = c->dimension, has_tank = 0, in_tank = 0, nearest_tank = -1;
   double q[3], nearest = INFINITY;
   for (int w = 0; w < c->n_walls; w++) {
     const struct shape *s = &c->walls[w].shape;
-    int inside = shape_contains(s, dim, x), obstacle = c->walls[w].fluid_side == FLUID_OUTSIDE;
+    double xw[3] = {x[0], x[1], dim == 3 ? x[2] : 0};   /* x in the wall's frame at t = 0 */
+    if (frames && c->walls[w].moving) frame_reference(&frames[w], dim, x, xw);
+    int inside = shape_contains(s, dim, xw), obstacle = c->walls[w].fluid_side == FLUID_OUTSIDE;
     if (obstacle && inside) {
-      if (depth) *depth = shape_nearest_boundary(s, dim, x, q);
+      if (depth) *depth = shape_nearest_boundary(s, dim, xw, q);
       return w;
     }
     if (obstacle) continue;
     has_tank = 1;
     in_tank |= inside;
-    double d = inside ? INFINITY : shape_nearest_boundary(s, dim, x, q);
+    double d = inside ? INFINITY : shape_nearest_boundary(s, dim, xw, q);
     if (d < nearest || nearest_tank < 0) nearest = d, nearest_tank = w;
   }
   if (!has_tank || in_tank) return -1;

@@ -171,7 +171,7 @@ static int fill_fluids(const struct case_def *c, int rank, int n_ranks, struct p
     lattice_cover(&l, c->dimension, c->dx, anchor, lo, hi);
     for (long node = 0, size = lattice_size(&l); node < size; node++) {
       lattice_node(&l, node, x);
-      if (!shape_contains(s, c->dimension, x) || walls_solid_at(c, x, NULL) >= 0) continue;
+      if (!shape_contains(s, c->dimension, x) || walls_solid_at(c, NULL, x, NULL) >= 0) continue;
       if (wall_distance(c, x) < 0.5 * c->dx * (1 - BOUNDARY_TOL)) continue;
       int j = earlier_region(c, k, x);
       if (j >= 0) {
@@ -282,7 +282,7 @@ static int fill_walls(const struct case_def *c, double thickness, int rank, int 
     wall_nodes_open(&wn, c, w, thickness);
     for (long k = wall_nodes_skip(&wn, 0); k < wn.count && !status; k = wall_nodes_skip(&wn, k + 1)) {
       wall_nodes_get(&wn, k, x);
-      if (!ghost_of(c, w, thickness, x) || walls_solid_at(c, x, NULL) < 0) continue;
+      if (!ghost_of(c, w, thickness, x) || walls_solid_at(c, NULL, x, NULL) < 0) continue;
       if (earlier_wall(c, w, thickness, x) >= 0) continue;
       if (!inside_domain(c, x)) {
         snprintf(err, err_len, "%s: walls.%d: its %d ghost layers (%g m thick) reach (%g, %g%s) outside "

@@ -1,8 +1,12 @@
 /* mem_estimate.c — memory per rank of a run and memory available on a node. The constants were
  * measured with the peak resident size that the end-of-run summary prints (engine_report.c),
  * between two resolutions of the same case: 305-320 bytes per particle in 2D (single phase with
- * walls; two phases with shifting, free surface and damper), 370-420 in 3D; about 25 MB for a
- * process with a few particles; 155 bytes per cell of a 2D grid on the rank that runs METIS. */
+ * walls; two phases with shifting, free surface and damper), 370-420 in 3D, before the per-step
+ * neighbour lists; these add 4 bytes per neighbour within 1.15 kernel supports of each fluid
+ * particle (about 66 in 2D, 410 in 3D at h/dx = 1.33): the two-phase dam break measured 590-620
+ * bytes per particle in 2D between 1.7e5 and 6.6e5 particles; 3D is estimated as 420 + 1650.
+ * About 25 MB for a process with a few particles; 155 bytes per cell of a 2D grid on the rank
+ * that runs METIS. */
 #include "mem_estimate.h"
 
 #include <math.h>
@@ -10,8 +14,8 @@
 #include <stdlib.h>
 #include <unistd.h>
 
-#define BYTES_PER_PARTICLE_2D 350.0
-#define BYTES_PER_PARTICLE_3D 450.0
+#define BYTES_PER_PARTICLE_2D 650.0
+#define BYTES_PER_PARTICLE_3D 2100.0
 #define PROCESS_BYTES 30e6
 #define CELL_BYTES_BASE 64.0       /* cell arrays of every rank */
 #define CELL_BYTES_PER_LINK 16.0   /* METIS graph and work arrays per neighbour link */

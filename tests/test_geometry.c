@@ -81,15 +81,15 @@ static void check_walls_solid(void) {
   c.walls[2].shape = box2(1, 0, 2, 0.5);
   double fluid[2] = {0.2, 0.2}, arm[2] = {1.5, 0.2}, obstacle[2] = {0.5, 0.55}, out[2] = {1.5, 0.8};
   double right[2] = {2.25, 0.2}, depth = -1;
-  CHECK(walls_solid_at(&c, fluid, &depth) == -1 && depth == -1, "fluid in the first tank");
-  CHECK(walls_solid_at(&c, arm, &depth) == -1, "fluid in the second tank");
-  CHECK(walls_solid_at(&c, obstacle, &depth) == 1, "inside the obstacle");
+  CHECK(walls_solid_at(&c, NULL, fluid, &depth) == -1 && depth == -1, "fluid in the first tank");
+  CHECK(walls_solid_at(&c, NULL, arm, &depth) == -1, "fluid in the second tank");
+  CHECK(walls_solid_at(&c, NULL, obstacle, &depth) == 1, "inside the obstacle");
   CHECK_CLOSE(depth, 0.05, 1e-14, "depth inside the obstacle");
-  CHECK(walls_solid_at(&c, out, &depth) == 2, "outside both tanks: the nearer one");
+  CHECK(walls_solid_at(&c, NULL, out, &depth) == 2, "outside both tanks: the nearer one");
   CHECK_CLOSE(depth, 0.3, 1e-14, "depth outside the tanks");
-  CHECK(walls_solid_at(&c, right, NULL) == 2, "no depth asked");
+  CHECK(walls_solid_at(&c, NULL, right, NULL) == 2, "no depth asked");
   c.n_walls = 0;
-  CHECK(walls_solid_at(&c, out, &depth) == -1, "no walls: fluid everywhere");
+  CHECK(walls_solid_at(&c, NULL, out, &depth) == -1, "no walls: fluid everywhere");
 }
 
 int main(void) {
