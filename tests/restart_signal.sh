@@ -9,7 +9,7 @@ cd "$(dirname "$0")/.."
 PYTHON=${PYTHON:-/usr/bin/python3}
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
-run=(build/mpsph run tests/cases/dambreak-2phase-coarse.yaml --set time.max_steps=150)
+run=(build/mpsph run tests/cases/dambreak-2phase-coarse.yaml --set time.max_steps=120)
 
 scripts/mpirun -n 2 "${run[@]}" -o "$out/ref" > "$out/ref.log" 2>&1
 
