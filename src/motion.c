@@ -37,9 +37,53 @@ static void law_shape(const struct motion_law *l, double t, double *s) {
   s[2] = r[2] * sn + 2 * r[1] * w * cs - r[0] * w * w * sn;
 }
 
+/* The slope of table column col at row i: the derivative of the parabola through rows i-1, i,
+ * i+1 (non-uniform three-point formula); zero at the first and last rows. */
+static double table_slope(const struct wall_motion *m, int i, int col) {
+  if (i == 0 || i == m->n_rows - 1) return 0;
+  const double *a = m->table[i - 1], *b = m->table[i], *c = m->table[i + 1];
+  double h0 = b[0] - a[0], h1 = c[0] - b[0];
+  double s0 = (b[col] - a[col]) / h0, s1 = (c[col] - b[col]) / h1;
+  return (h1 * s0 + h0 * s1) / (h0 + h1);
+}
+
+/* Column col of the table at time t and its first two derivatives into q[0..2]: the cubic
+ * Hermite piece of the interval holding t; constant outside the table. */
+static void table_eval(const struct wall_motion *m, double t, int col, double *q) {
+  int n = m->n_rows, i = 0;
+  q[1] = q[2] = 0;
+  if (t <= m->table[0][0] || t >= m->table[n - 1][0]) {
+    q[0] = m->table[t <= m->table[0][0] ? 0 : n - 1][col];
+    return;
+  }
+  while (m->table[i + 1][0] <= t) i++;
+  double h = m->table[i + 1][0] - m->table[i][0], s = (t - m->table[i][0]) / h;
+  double y0 = m->table[i][col], y1 = m->table[i + 1][col];
+  double m0 = table_slope(m, i, col) * h, m1 = table_slope(m, i + 1, col) * h;
+  double s2 = s * s, s3 = s2 * s;
+  q[0] = (2 * s3 - 3 * s2 + 1) * y0 + (s3 - 2 * s2 + s) * m0 + (-2 * s3 + 3 * s2) * y1 + (s3 - s2) * m1;
+  q[1] = ((6 * s2 - 6 * s) * (y0 - y1) + (3 * s2 - 4 * s + 1) * m0 + (3 * s2 - 2 * s) * m1) / h;
+  q[2] = ((12 * s - 6) * (y0 - y1) + (6 * s - 4) * m0 + (6 * s - 2) * m1) / (h * h);
+}
+
+/* The frame of a tabulated motion at time t. */
+static void table_frame(const struct wall_motion *m, double t, struct frame *f) {
+  double q[3];
+  for (int d = 0; d < 3; d++) {
+    table_eval(m, t, 1 + d, q);
+    f->d[d] = q[0], f->v[d] = q[1], f->a[d] = q[2];
+  }
+  table_eval(m, t, 4, q);
+  f->theta = q[0], f->omega = q[1], f->alpha = q[2];
+}
+
 void motion_frame(const struct wall_motion *m, double t, struct frame *f) {
   memset(f, 0, sizeof(*f));
   memcpy(f->centre, m->centre, sizeof(f->centre));
+  if (m->n_rows > 0) {
+    table_frame(m, t, f);
+    return;
+  }
   double s[3];
   if (m->translation.active) {
     law_shape(&m->translation, t, s);
