@@ -1,6 +1,6 @@
 /* motion.h — prescribed rigid motion of a wall: a translation and (2D) a rotation about a centre,
  * each a sinusoid switched on by a ramp, or a table of time, displacement and angle interpolated
- * by C1 piecewise cubics. Tank sloshing cases move their walls with it. */
+ * by cubic splines. Tank sloshing cases move their walls with it. */
 #ifndef MPSPH_MOTION_H
 #define MPSPH_MOTION_H
 
@@ -41,10 +41,10 @@ struct frame {
 };
 
 /** Evaluate the frame of motion m at time t [s]. A motion with no active law is the identity.
- *  A table is interpolated by cubic Hermite pieces with the slope of the parabola through each
- *  interior row and its two neighbours and zero slope at the first and last rows (C1: velocity
- *  continuous, acceleration the piece's, jumping at rows); before the first row and after the
- *  last the wall rests at that row's displacement and angle. */
+ *  A table is interpolated per column by the cubic spline through its rows with zero first
+ *  derivative at the first and last rows (clamped): displacement, velocity and acceleration
+ *  are continuous inside the table (C2); before the first row and after the last the wall rests
+ *  at that row's displacement and angle, so only the acceleration jumps there. */
 void motion_frame(const struct wall_motion *m, double t, struct frame *f);
 
 /** The position at the frame's time of the body point x_ref (its position at t = 0) [m]. */

@@ -1,5 +1,6 @@
 /* motion.c — prescribed rigid wall motion: ramped sinusoids for the translation and the angle,
- * with their first and second time derivatives evaluated analytically. */
+ * or a table interpolated by clamped cubic splines, with their first and second time
+ * derivatives evaluated analytically. */
 #include <math.h>
 #include <string.h>
 #include "motion.h"
@@ -37,33 +38,45 @@ static void law_shape(const struct motion_law *l, double t, double *s) {
   s[2] = r[2] * sn + 2 * r[1] * w * cs - r[0] * w * w * sn;
 }
 
-/* The slope of table column col at row i: the derivative of the parabola through rows i-1, i,
- * i+1 (non-uniform three-point formula); zero at the first and last rows. */
-static double table_slope(const struct wall_motion *m, int i, int col) {
-  if (i == 0 || i == m->n_rows - 1) return 0;
-  const double *a = m->table[i - 1], *b = m->table[i], *c = m->table[i + 1];
-  double h0 = b[0] - a[0], h1 = c[0] - b[0];
-  double s0 = (b[col] - a[col]) / h0, s1 = (c[col] - b[col]) / h1;
-  return (h1 * s0 + h0 * s1) / (h0 + h1);
+/* The second derivatives M[0..n-1] at the rows of the clamped cubic spline of table column col
+ * (zero first derivative at the first and last rows): the tridiagonal system
+ * h_{i-1} M_{i-1} + 2 (h_{i-1} + h_i) M_i + h_i M_{i+1} = 6 (s_i - s_{i-1}), s_i the secant
+ * slopes, solved by the Thomas algorithm. */
+static void spline_moments(const struct wall_motion *m, int col, double *M) {
+  int n = m->n_rows;
+  double c[MOTION_MAX_ROWS], prev_h = 0, prev_s = 0;   /* c: the eliminated super-diagonal */
+  for (int i = 0; i < n; i++) {
+    double h = i < n - 1 ? m->table[i + 1][0] - m->table[i][0] : 0;
+    double s = i < n - 1 ? (m->table[i + 1][col] - m->table[i][col]) / h : 0;
+    double diag = 2 * (prev_h + h), rhs = 6 * (s - prev_s);
+    if (i > 0) {
+      diag -= prev_h * c[i - 1];
+      rhs -= prev_h * M[i - 1];
+    }
+    c[i] = h / diag;
+    M[i] = rhs / diag;
+    prev_h = h, prev_s = s;
+  }
+  for (int i = n - 2; i >= 0; i--) M[i] -= c[i] * M[i + 1];
 }
 
-/* Column col of the table at time t and its first two derivatives into q[0..2]: the cubic
- * Hermite piece of the interval holding t; constant outside the table. */
+/* Column col of the table at time t and its first two derivatives into q[0..2]: the clamped
+ * cubic spline through the rows; constant outside the table. */
 static void table_eval(const struct wall_motion *m, double t, int col, double *q) {
   int n = m->n_rows, i = 0;
+  double M[MOTION_MAX_ROWS];
   q[1] = q[2] = 0;
   if (t <= m->table[0][0] || t >= m->table[n - 1][0]) {
     q[0] = m->table[t <= m->table[0][0] ? 0 : n - 1][col];
     return;
   }
   while (m->table[i + 1][0] <= t) i++;
-  double h = m->table[i + 1][0] - m->table[i][0], s = (t - m->table[i][0]) / h;
-  double y0 = m->table[i][col], y1 = m->table[i + 1][col];
-  double m0 = table_slope(m, i, col) * h, m1 = table_slope(m, i + 1, col) * h;
-  double s2 = s * s, s3 = s2 * s;
-  q[0] = (2 * s3 - 3 * s2 + 1) * y0 + (s3 - 2 * s2 + s) * m0 + (-2 * s3 + 3 * s2) * y1 + (s3 - s2) * m1;
-  q[1] = ((6 * s2 - 6 * s) * (y0 - y1) + (3 * s2 - 4 * s + 1) * m0 + (3 * s2 - 2 * s) * m1) / h;
-  q[2] = ((12 * s - 6) * (y0 - y1) + (6 * s - 4) * m0 + (6 * s - 2) * m1) / (h * h);
+  spline_moments(m, col, M);
+  double h = m->table[i + 1][0] - m->table[i][0], a = m->table[i + 1][0] - t, b = t - m->table[i][0];
+  double ca = m->table[i][col] / h - M[i] * h / 6, cb = m->table[i + 1][col] / h - M[i + 1] * h / 6;
+  q[0] = (M[i] * a * a * a + M[i + 1] * b * b * b) / (6 * h) + ca * a + cb * b;
+  q[1] = (M[i + 1] * b * b - M[i] * a * a) / (2 * h) - ca + cb;
+  q[2] = (M[i] * a + M[i + 1] * b) / h;
 }
 
 /* The frame of a tabulated motion at time t. */

@@ -1,5 +1,6 @@
 /* test_motion.c — prescribed wall motion: the analytic velocity and acceleration of a body point
  * against central differences of its position, ramps, and the identity of an inactive motion. */
+#include <math.h>
 #include <string.h>
 #include "check.h"
 #include "motion.h"
@@ -34,8 +35,8 @@ static void check_derivatives(const struct wall_motion *m, double t, const char 
   check_derivatives_step(m, t, 1e-4, what);
 }
 
-/* A table motion: passes through its rows, C1 (velocity continuous across a row), derivatives
- * against finite differences inside the pieces, rest outside the table. */
+/* A table motion: passes through its rows, C2 (velocity and acceleration continuous across a
+ * row), derivatives against finite differences, rest outside the table. */
 static void test_table(void) {
   static struct wall_motion m;
   const double rows[5][5] = {{0, 0, 0, 0, 0}, {0.2, 0.01, -0.003, 0, 0.02}, {0.5, -0.02, 0.004, 0, -0.01},
@@ -47,22 +48,27 @@ static void test_table(void) {
   struct frame f, g;
   for (int i = 0; i < 5; i++) {
     motion_frame(&m, rows[i][0], &f);
-    CHECK(f.d[0] == rows[i][1] && f.d[1] == rows[i][2] && f.theta == rows[i][4], "table row %d: d %g %g theta %g",
-          i, f.d[0], f.d[1], f.theta);
+    CHECK(fabs(f.d[0] - rows[i][1]) + fabs(f.d[1] - rows[i][2]) + fabs(f.theta - rows[i][4]) < 1e-16,
+          "table row %d: d %.17g %.17g theta %.17g", i, f.d[0], f.d[1], f.theta);
   }
-  /* inside the pieces (the acceleration jumps at the rows); the cubic pieces of 0.1 s have a
-   * third derivative ~300 m/s^3, so a step of 1e-5 s keeps the difference's error below 1e-8 */
+  /* the spline's pieces of 0.1 s have a third derivative up to ~300 m/s^3 (it jumps at the
+   * rows), so a step of 1e-5 s keeps the differences' error below 1e-8 */
   for (double t = 0.03; t < 1.0; t += 0.043) check_derivatives_step(&m, t, 1e-5, "table");
-  for (int i = 1; i < 4; i++) {   /* the velocity is continuous across the interior rows */
+  for (int i = 1; i < 4; i++) {   /* velocity and acceleration are continuous across the rows */
     motion_frame(&m, rows[i][0] - 1e-9, &f);
     motion_frame(&m, rows[i][0] + 1e-9, &g);
     CHECK_CLOSE(f.v[0], g.v[0], 1e-6, "table velocity continuous at a row");
     CHECK_CLOSE(f.omega, g.omega, 1e-6, "table rate continuous at a row");
+    CHECK_CLOSE(f.a[1], g.a[1], 1e-5, "table acceleration continuous at a row");
+    CHECK_CLOSE(f.alpha, g.alpha, 1e-5, "table angular acceleration continuous at a row");
   }
   motion_frame(&m, 1.5, &f);
   CHECK(f.d[0] == 0 && f.v[0] == 0 && f.a[0] == 0 && f.omega == 0, "rest after the last row");
   motion_frame(&m, 0.0, &f);
   CHECK(f.v[0] == 0 && f.v[1] == 0 && f.omega == 0, "a table starts at rest (zero end slopes)");
+  motion_frame(&m, 1e-9, &f);
+  CHECK(fabs(f.v[0]) < 1e-6 && fabs(f.omega) < 1e-6, "the clamped spline leaves the first row at rest: v %g",
+        f.v[0]);
 }
 
 int main(void) {
