@@ -653,7 +653,7 @@ static int sensor_face(const struct map *m, struct probe *p, const struct case_d
                 "(segment sensors are 2D only)");
   if (vec(m, "axis", 1, p->axis)) return 1;
   for (int d = 0; d < 2; d++) len += p->axis[d] * p->axis[d];
-  if (len == 0 || !isfinite(len)) return fail(m->ld, axis, path, "got a zero vector, expected a direction");
+  if (len == 0 || !isfinite(len)) return fail(m->ld, axis, path, "got a zero or overflowing vector, expected a direction of finite length");
   for (int d = 0; d < 2; d++) {   /* the axis stays as given (the round trip); its unit vector: */
     lo[d] = p->position[d] - 0.5 * p->diameter * p->axis[d] / sqrt(len);
     hi[d] = p->position[d] + 0.5 * p->diameter * p->axis[d] / sqrt(len);

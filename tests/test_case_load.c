@@ -430,7 +430,7 @@ static void test_probe_kinds(void) {
   expect_error(variant(12, "  - {name: e, position: [0.5, 0], axis: [1, 0]}"), 0, NULL,
                "case.yaml:12: probes.0.axis: got an axis for a point sensor", "diameter > 0");
   expect_error(variant(12, "  - {name: e, position: [0.5, 0], diameter: 0.1, axis: [0, 0]}"), 0, NULL,
-               "case.yaml:12: probes.0.axis: got a zero vector", "a direction");
+               "case.yaml:12: probes.0.axis: got a zero or overflowing vector", "a direction of finite length");
   expect_error(variant(12, "  - {name: e, position: [0.5, 0], diameter: 0.1, axis: [0, 1]}"), 0, NULL,
                "case.yaml:12: probes.0.diameter: got [0.5, -0.05] outside the domain", "inside the domain");
   expect_error(variant(12, "  - {name: e, position: [0.5, 0], interpolation: linear}"), 0, NULL,
