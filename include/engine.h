@@ -97,6 +97,7 @@ struct engine {
   long n_repartitions, last_repartition_step;
   double t_compute;                /* this rank's pass time since the last balance check [s] */
   double t_migrate, t_output;      /* accumulated [s] */
+  double t_steps;                  /* wall time of the step loop without the final output [s] */
   /* output */
   const char *outdir;
   char *case_yaml;
@@ -126,7 +127,8 @@ int engine_finished(const struct engine *e);
 void engine_global_counts(const struct engine *e, double *n_fluid, double *n_wall);
 
 /** Print (rank 0) the summary of the `steps` steps run in loop_seconds [s]: throughput, time
- *  per operation, peak memory. Collective. */
+ *  per operation, peak memory; and write it, with every rank's memory, to OUTDIR/timings.csv
+ *  (through a temporary name) for the benchmark driver. Collective. */
 void engine_report(struct engine *e, long steps, double loop_seconds);
 
 /** Print (stderr) the step, time, stage, id, phase and position of particle i and what tripped. */

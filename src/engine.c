@@ -292,6 +292,7 @@ int engine_run(struct engine *e) {
     status = step_and_output(e);
     if (!status) signo = signal_stop_agreed(e->comm);
   }
+  e->t_steps = MPI_Wtime() - loop_start;
   if (status == 2) {
     report(e, "run stopped: the state became unstable; writing the failing and the last good state");
     if (engine_write_failure(e)) status = 3;
