@@ -115,6 +115,9 @@ build/bench/bench_hdf5: scripts/bench/bench_hdf5.c build/libmpsph.a | build/benc
 	@$(MPICC) $(CFLAGS) $< build/libmpsph.a -o $@ $(LDLIBS)
 build/bench:
 	mkdir -p $@
+build/bench/mpsph-single-phase: $(SRC) $(wildcard include/*.h) | build/bench
+	@echo "LD $@ (SINGLE_PHASE)"
+	@$(MPICC) $(filter-out -DMPSPH_SINGLE_PHASE,$(CFLAGS)) -DMPSPH_SINGLE_PHASE $(SRC) -o $@ $(LDLIBS)
 build/tests/test_no_alloc: tests/test_no_alloc.c tests/check.h build/libmpsph.a | build/tests
 	@echo "LD $@"
 	@$(MPICC) $(CFLAGS) -Itests $< build/libmpsph.a -o $@ $(LDLIBS) \

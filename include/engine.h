@@ -97,6 +97,7 @@ struct engine {
   long n_repartitions, last_repartition_step;
   double t_compute;                /* this rank's pass time since the last balance check [s] */
   double t_migrate, t_output;      /* accumulated [s] */
+  double t_dropped_ops;            /* time of operations dropped from the pipeline by a re-assembly [s] */
   double t_steps;                  /* wall time of the step loop without the final output [s] */
   /* output */
   const char *outdir;
@@ -177,7 +178,8 @@ void engine_work_reserve(struct engine *e);
 /** Evaluate the stage pipeline at the current state (skip_state_halo: the halo is fresh). */
 void engine_evaluate(struct engine *e, int skip_state_halo);
 
-/** Assemble the pipeline of passes and halo updates the case needs; allocate its arrays. */
+/** Assemble the pipeline of passes and halo updates the case needs; allocate its arrays. On a
+ *  re-assembly the operations that stay keep their accumulated time and pairs. */
 void engine_assemble(struct engine *e);
 
 /** Print the active terms and the pipeline (rank 0). */

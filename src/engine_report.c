@@ -41,7 +41,7 @@ struct run_summary {
   long steps;
   double loop_seconds, n_fluid, n_wall;
   double op_max[ENGINE_MAX_OPS], op_mean[ENGINE_MAX_OPS], op_pairs[ENGINE_MAX_OPS];
-  double migrate_max, migrate_mean, output_max, steps_max;
+  double migrate_max, migrate_mean, output_max, steps_max, dropped_max, dropped_mean;
   double *rss_peak;                /* peak and current RSS per rank, interleaved; rank 0 only [bytes] */
 };
 
@@ -63,6 +63,7 @@ static void summarise(struct engine *e, long steps, double loop_seconds, struct 
     MPI_Allreduce(&pairs, &s->op_pairs[k], 1, MPI_DOUBLE, MPI_SUM, e->comm);
   }
   max_mean(e, e->t_migrate, &s->migrate_max, &s->migrate_mean);
+  max_mean(e, e->t_dropped_ops, &s->dropped_max, &s->dropped_mean);
   s->output_max = max_over_ranks(e, e->t_output);
   s->steps_max = max_over_ranks(e, e->t_steps);
   if (e->rank == 0) all = malloc(2 * (size_t)e->n_ranks * sizeof(double));
@@ -82,6 +83,7 @@ static void write_rows(const struct engine *e, const struct run_summary *s, FILE
             s->op_max[k], s->op_mean[k], s->op_pairs[k]);
   fprintf(f, "migration,time,%ld,%.6f,%.6f,\n", e->n_repartitions, s->migrate_max, s->migrate_mean);
   fprintf(f, "output,time,,%.6f,,\n", s->output_max);
+  fprintf(f, "dropped_operations,time,,%.6f,%.6f,\n", s->dropped_max, s->dropped_mean);
   for (int r = 0; r < e->n_ranks; r++)
     fprintf(f, "rss_peak_rank%d,memory,%.0f,,,\nrss_end_rank%d,memory,%.0f,,,\n", r,
             s->rss_peak[2 * r], r, s->rss_peak[2 * r + 1]);
