@@ -99,6 +99,7 @@ struct engine {
   double t_migrate, t_output;      /* accumulated [s] */
   double t_dropped_ops;            /* time of operations dropped from the pipeline by a re-assembly [s] */
   double t_steps;                  /* wall time of the step loop without the final output [s] */
+  double t_steps_cpu;              /* CPU time of this process in the same loop [s] */
   /* output */
   const char *outdir;
   char *case_yaml;

@@ -98,7 +98,8 @@ def derive(rows, case):
     fluid, wall = num(by["fluid_particles"]["value"]), num(by["wall_particles"]["value"])
     loop = num(by["loop"]["seconds_max"])
     t_steps = num(by["steps_without_final_output"]["seconds_max"])
-    d = {"ranks": ranks, "steps": steps, "fluid": fluid, "wall": wall, "loop_s": loop, "steps_s": t_steps,
+    cpu = by.get("steps_without_final_output_cpu")
+    d = {"steps_cpu": num(cpu["seconds_mean"]) if cpu else t_steps, "ranks": ranks, "steps": steps, "fluid": fluid, "wall": wall, "loop_s": loop, "steps_s": t_steps,
          "psps_core": fluid * steps / t_steps / ranks}
     shares, halo = {}, 0.0
     for r in rows:
@@ -186,12 +187,16 @@ class Bench:
                 "build/mpsph", "2phase", dx, self.cfg["weak_steps"], ranks, self.work))
 
     def terms(self):
-        """The two-phase scene with every term on, then each switched off (1 rank)."""
-        for label, sets in TERMS_OFF:
-            self.say("terms: " + label)
-            self.res[("term", label)] = repeat(self.repeats, lambda: run_case(
-                "build/mpsph", "2phase", self.cfg["term_dx"], self.cfg["term_steps"], 1, self.work,
-                TERMS_ON + sets))
+        """The two-phase scene with every term on, then each switched off (1 rank); the variants
+        in turn within each repeat, so that a change of the machine's load hits all alike."""
+        for label, _ in TERMS_OFF:
+            self.res[("term", label)] = []
+        for rep in range(self.repeats):
+            for label, sets in TERMS_OFF:
+                self.say("terms: %s (repeat %d)" % (label, rep + 1))
+                self.res[("term", label)].append(run_case(
+                    "build/mpsph", "2phase", self.cfg["term_dx"], self.cfg["term_steps"], 1, self.work,
+                    TERMS_ON + sets))
 
     def single_phase(self):
         """Single-phase scene through the multiphase build and the SINGLE_PHASE=1 build,
@@ -227,6 +232,8 @@ def main():
     ap.add_argument("--repeats", type=int)
     ap.add_argument("--sizes", type=int, default=3)
     ap.add_argument("--out")
+    ap.add_argument("--only", help="comma-separated groups (sizes,weak,terms,single_phase,hdf5) to run "
+                    "again into the results saved by the last run; the report names them")
     ap.add_argument("--report-only", action="store_true",
                     help="rewrite the report from the results saved by the last run (build/bench/work/results.pickle)")
     a = ap.parse_args()
@@ -240,6 +247,9 @@ def main():
         with open(saved, "rb") as f:
             b, m, peaks, cfg, quick = pickle.load(f)
         report(b, m, peaks, cfg, quick, out)
+        return
+    if a.only:
+        rerun(a, saved, out)
         return
     sh(["make", "--no-print-directory", "build/mpsph", "build/bench/peak_fma", "build/bench/bench_hdf5",
         "build/bench/mpsph-single-phase"])
@@ -259,6 +269,25 @@ def main():
     with open(saved, "wb") as f:
         pickle.dump((b, m, peaks, cfg, a.quick), f)
     report(b, m, peaks, cfg, a.quick, out)
+
+
+def rerun(a, saved, out):
+    """Run the groups named by --only again into the saved results, then rewrite the report."""
+    with open(saved, "rb") as f:
+        b, m, peaks, cfg, quick = pickle.load(f)
+    sh(["make", "--no-print-directory", "build/mpsph", "build/bench/bench_hdf5", "build/bench/mpsph-single-phase"])
+    b.log = sys.stdout
+    t0, info = time.time(), machine()
+    for group in a.only.split(","):
+        getattr(b, group)()
+    info["load_end"] = os.getloadavg()
+    info["seconds"] = time.time() - t0
+    info["groups"] = a.only
+    m.setdefault("reruns", []).append(info)
+    b.log = None
+    with open(saved, "wb") as f:
+        pickle.dump((b, m, peaks, cfg, quick), f)
+    report(b, m, peaks, cfg, quick, out)
 
 
 def report(b, m, peaks, cfg, quick, out):

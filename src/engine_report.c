@@ -41,7 +41,7 @@ struct run_summary {
   long steps;
   double loop_seconds, n_fluid, n_wall;
   double op_max[ENGINE_MAX_OPS], op_mean[ENGINE_MAX_OPS], op_pairs[ENGINE_MAX_OPS];
-  double migrate_max, migrate_mean, output_max, steps_max, dropped_max, dropped_mean;
+  double migrate_max, migrate_mean, output_max, steps_max, dropped_max, dropped_mean, cpu_max, cpu_mean;
   double *rss_peak;                /* peak and current RSS per rank, interleaved; rank 0 only [bytes] */
 };
 
@@ -66,6 +66,7 @@ static void summarise(struct engine *e, long steps, double loop_seconds, struct 
   max_mean(e, e->t_dropped_ops, &s->dropped_max, &s->dropped_mean);
   s->output_max = max_over_ranks(e, e->t_output);
   s->steps_max = max_over_ranks(e, e->t_steps);
+  max_mean(e, e->t_steps_cpu, &s->cpu_max, &s->cpu_mean);
   if (e->rank == 0) all = malloc(2 * (size_t)e->n_ranks * sizeof(double));
   MPI_Gather(rss, 2, MPI_DOUBLE, all, 2, MPI_DOUBLE, 0, e->comm);
   s->rss_peak = all;
@@ -78,6 +79,7 @@ static void write_rows(const struct engine *e, const struct run_summary *s, FILE
   fprintf(f, "fluid_particles,run,%.0f,,,\nwall_particles,run,%.0f,,,\n", s->n_fluid, s->n_wall);
   fprintf(f, "loop,time,,%.6f,%.6f,\n", s->loop_seconds, s->loop_seconds);
   fprintf(f, "steps_without_final_output,time,,%.6f,,\n", s->steps_max);
+  fprintf(f, "steps_without_final_output_cpu,cpu,,%.6f,%.6f,\n", s->cpu_max, s->cpu_mean);
   for (int k = 0; k < e->n_ops; k++)
     fprintf(f, "\"%s\",%s,,%.6f,%.6f,%.0f\n", e->ops[k].name, e->ops[k].pass ? "pass" : "halo",
             s->op_max[k], s->op_mean[k], s->op_pairs[k]);
