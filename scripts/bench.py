@@ -235,14 +235,15 @@ def main():
     ap.add_argument("--only", help="comma-separated groups (sizes,weak,terms,single_phase,hdf5) to run "
                     "again into the results saved by the last run; the report names them")
     ap.add_argument("--report-only", action="store_true",
-                    help="rewrite the report from the results saved by the last run (build/bench/work/results.pickle)")
+                    help="rewrite the report from the results saved by the last run into the same --out "
+                    "(build/bench/work/results_<out>.pickle)")
     a = ap.parse_args()
     cfg = QUICK if a.quick else FULL
     out = a.out or os.path.join(ROOT, "build/bench" if a.quick else "doc")
     os.makedirs(out, exist_ok=True)
     work = os.path.join(ROOT, "build/bench/work")
     os.makedirs(work, exist_ok=True)
-    saved = os.path.join(work, "results.pickle")
+    saved = os.path.join(work, "results_%s.pickle" % os.path.abspath(out).strip("/").replace("/", "_"))
     if a.report_only:
         with open(saved, "rb") as f:
             b, m, peaks, cfg, quick = pickle.load(f)
