@@ -106,5 +106,25 @@ run: deps
 	@$(MAKE) --no-print-directory build/mpsph
 	@PYTHON=$(PYTHON) NP=$(NP) scripts/run-default
 
+# Benchmarks (issue 6): doc/performance.md and doc/performance.csv from measured runs only.
+# BENCH_QUICK=1: a few-minute smoke version written to build/bench/ instead of doc/.
+BENCH_TOOLS := build/bench/peak_fma build/bench/bench_hdf5
+build/bench/peak_fma: scripts/bench/peak_fma.c | build/bench
+	@$(MPICC) $(CFLAGS) $< -o $@
+build/bench/bench_hdf5: scripts/bench/bench_hdf5.c build/libmpsph.a | build/bench
+	@$(MPICC) $(CFLAGS) $< build/libmpsph.a -o $@ $(LDLIBS)
+build/bench:
+	mkdir -p $@
+build/bench/mpsph-single-phase: $(SRC) $(wildcard include/*.h) | build/bench
+	@echo "LD $@ (SINGLE_PHASE)"
+	@$(MPICC) $(filter-out -DMPSPH_SINGLE_PHASE,$(CFLAGS)) -DMPSPH_SINGLE_PHASE $(SRC) -o $@ $(LDLIBS)
+build/tests/test_no_alloc: tests/test_no_alloc.c tests/check.h build/libmpsph.a | build/tests
+	@echo "LD $@"
+	@$(MPICC) $(CFLAGS) -Itests $< build/libmpsph.a -o $@ $(LDLIBS) \
+	  -Wl,--wrap=malloc,--wrap=calloc,--wrap=realloc
+bench: deps
+	@$(MAKE) --no-print-directory build/mpsph $(BENCH_TOOLS)
+	@$(PYTHON) scripts/bench.py $(if $(BENCH_QUICK),--quick)
+
 clean:
 	rm -rf build

@@ -97,6 +97,9 @@ struct engine {
   long n_repartitions, last_repartition_step;
   double t_compute;                /* this rank's pass time since the last balance check [s] */
   double t_migrate, t_output;      /* accumulated [s] */
+  double t_dropped_ops;            /* time of operations dropped from the pipeline by a re-assembly [s] */
+  double t_steps;                  /* wall time of the step loop without the final output [s] */
+  double t_steps_cpu;              /* CPU time of this process in the same loop [s] */
   /* output */
   const char *outdir;
   char *case_yaml;
@@ -126,7 +129,8 @@ int engine_finished(const struct engine *e);
 void engine_global_counts(const struct engine *e, double *n_fluid, double *n_wall);
 
 /** Print (rank 0) the summary of the `steps` steps run in loop_seconds [s]: throughput, time
- *  per operation, peak memory. Collective. */
+ *  per operation, peak memory; and write it, with every rank's memory, to OUTDIR/timings.csv
+ *  (through a temporary name) for the benchmark driver. Collective. */
 void engine_report(struct engine *e, long steps, double loop_seconds);
 
 /** Print (stderr) the step, time, stage, id, phase and position of particle i and what tripped. */
@@ -175,7 +179,8 @@ void engine_work_reserve(struct engine *e);
 /** Evaluate the stage pipeline at the current state (skip_state_halo: the halo is fresh). */
 void engine_evaluate(struct engine *e, int skip_state_halo);
 
-/** Assemble the pipeline of passes and halo updates the case needs; allocate its arrays. */
+/** Assemble the pipeline of passes and halo updates the case needs; allocate its arrays. On a
+ *  re-assembly the operations that stay keep their accumulated time and pairs. */
 void engine_assemble(struct engine *e);
 
 /** Print the active terms and the pipeline (rank 0). */

@@ -3,6 +3,7 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 #include "engine.h"
 #include "engine_checkpoint.h"
 #include "init.h"
@@ -283,15 +284,24 @@ static int step_and_output(struct engine *e) {
   return status;
 }
 
+/* CPU time of this process so far [s]: what the run costs on a machine shared with other jobs. */
+static double process_cpu_seconds(void) {
+  struct timespec t;
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
+
 int engine_run(struct engine *e) {
   int status = e->restarted ? 0 : engine_output(e, 1), signo = 0;
   long first_step = e->step;
-  double loop_start = MPI_Wtime();
+  double loop_start = MPI_Wtime(), cpu_start = process_cpu_seconds();
   e->next_progress = loop_start + e->c->progress_interval;
   while (!status && !signo && !engine_finished(e)) {
     status = step_and_output(e);
     if (!status) signo = signal_stop_agreed(e->comm);
   }
+  e->t_steps = MPI_Wtime() - loop_start;
+  e->t_steps_cpu = process_cpu_seconds() - cpu_start;
   if (status == 2) {
     report(e, "run stopped: the state became unstable; writing the failing and the last good state");
     if (engine_write_failure(e)) status = 3;

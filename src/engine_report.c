@@ -1,5 +1,9 @@
-/* engine_report.c — the end-of-run summary: throughput, time per operation, memory. */
+/* engine_report.c — the end-of-run summary: throughput, time per operation, memory; printed, and
+ * written to OUTDIR/timings.csv for the benchmark driver (scripts/bench.py). */
+#include <stdlib.h>
+#include <string.h>
 #include <sys/resource.h>
+#include <unistd.h>
 #include "engine.h"
 
 /* Peak resident memory of this process [bytes]. */
@@ -7,6 +11,16 @@ static double peak_rss_bytes(void) {
   struct rusage ru;
   getrusage(RUSAGE_SELF, &ru);
   return (double)ru.ru_maxrss * 1024.0;
+}
+
+/* Current resident memory of this process [bytes] (/proc/self/statm; 0 where it is missing). */
+static double current_rss_bytes(void) {
+  long pages_total = 0, pages_resident = 0;
+  FILE *f = fopen("/proc/self/statm", "r");
+  if (!f) return 0;
+  if (fscanf(f, "%ld %ld", &pages_total, &pages_resident) != 2) pages_resident = 0;
+  fclose(f);
+  return (double)pages_resident * (double)sysconf(_SC_PAGESIZE);
 }
 
 void engine_global_counts(const struct engine *e, double *n_fluid, double *n_wall) {
@@ -22,22 +36,100 @@ static double max_over_ranks(const struct engine *e, double x) {
   return x;
 }
 
-void engine_report(struct engine *e, long steps, double loop_seconds) {
-  double n_fluid, n_wall, rss = peak_rss_bytes(), rss_sum, rss_max = max_over_ranks(e, rss);
-  engine_global_counts(e, &n_fluid, &n_wall);
-  MPI_Allreduce(&rss, &rss_sum, 1, MPI_DOUBLE, MPI_SUM, e->comm);
-  double op_time[ENGINE_MAX_OPS], migrate = max_over_ranks(e, e->t_migrate);
-  for (int k = 0; k < e->n_ops; k++) op_time[k] = max_over_ranks(e, e->ops[k].seconds);
-  if (e->rank) return;
-  double rate = steps > 0 && loop_seconds > 0 ? n_fluid * (double)steps / loop_seconds : 0;
-  printf("summary: %ld steps in %.2f s on %d ranks; %.0f fluid + %.0f wall particles\n", steps,
-         loop_seconds, e->n_ranks, n_fluid, n_wall);
-  printf("  throughput: %.4g fluid particle-steps/s in total, %.4g per rank\n", rate, rate / e->n_ranks);
+/* Everything the summary reports, reduced over the ranks (memory gathered to rank 0). */
+struct run_summary {
+  long steps;
+  double loop_seconds, n_fluid, n_wall;
+  double op_max[ENGINE_MAX_OPS], op_mean[ENGINE_MAX_OPS], op_pairs[ENGINE_MAX_OPS];
+  double migrate_max, migrate_mean, output_max, steps_max, dropped_max, dropped_mean, cpu_max, cpu_mean;
+  double *rss_peak;                /* peak and current RSS per rank, interleaved; rank 0 only [bytes] */
+};
+
+/* Max and mean over ranks of x. */
+static void max_mean(const struct engine *e, double x, double *max, double *mean) {
+  *max = max_over_ranks(e, x);
+  MPI_Allreduce(&x, mean, 1, MPI_DOUBLE, MPI_SUM, e->comm);
+  *mean /= e->n_ranks;
+}
+
+static void summarise(struct engine *e, long steps, double loop_seconds, struct run_summary *s) {
+  double rss[2] = {peak_rss_bytes(), current_rss_bytes()}, *all = NULL;
+  s->steps = steps;
+  s->loop_seconds = loop_seconds;
+  engine_global_counts(e, &s->n_fluid, &s->n_wall);
+  for (int k = 0; k < e->n_ops; k++) {
+    double pairs = (double)e->ops[k].pairs;
+    max_mean(e, e->ops[k].seconds, &s->op_max[k], &s->op_mean[k]);
+    MPI_Allreduce(&pairs, &s->op_pairs[k], 1, MPI_DOUBLE, MPI_SUM, e->comm);
+  }
+  max_mean(e, e->t_migrate, &s->migrate_max, &s->migrate_mean);
+  max_mean(e, e->t_dropped_ops, &s->dropped_max, &s->dropped_mean);
+  s->output_max = max_over_ranks(e, e->t_output);
+  s->steps_max = max_over_ranks(e, e->t_steps);
+  max_mean(e, e->t_steps_cpu, &s->cpu_max, &s->cpu_mean);
+  if (e->rank == 0) all = malloc(2 * (size_t)e->n_ranks * sizeof(double));
+  MPI_Gather(rss, 2, MPI_DOUBLE, all, 2, MPI_DOUBLE, 0, e->comm);
+  s->rss_peak = all;
+}
+
+/* Rank 0: the summary as CSV rows name,kind,value,seconds_max,seconds_mean,pairs. */
+static void write_rows(const struct engine *e, const struct run_summary *s, FILE *f) {
+  fprintf(f, "name,kind,value,seconds_max,seconds_mean,pairs\n");
+  fprintf(f, "ranks,run,%d,,,\nsteps,run,%ld,,,\n", e->n_ranks, s->steps);
+  fprintf(f, "fluid_particles,run,%.0f,,,\nwall_particles,run,%.0f,,,\n", s->n_fluid, s->n_wall);
+  fprintf(f, "loop,time,,%.6f,%.6f,\n", s->loop_seconds, s->loop_seconds);
+  fprintf(f, "steps_without_final_output,time,,%.6f,,\n", s->steps_max);
+  fprintf(f, "steps_without_final_output_cpu,cpu,,%.6f,%.6f,\n", s->cpu_max, s->cpu_mean);
   for (int k = 0; k < e->n_ops; k++)
-    printf("  %6.2f s  %s\n", op_time[k], e->ops[k].name);
-  printf("  %6.2f s  migration, sort, halo rebuild (%ld re-partitions)\n", migrate, e->n_repartitions);
+    fprintf(f, "\"%s\",%s,,%.6f,%.6f,%.0f\n", e->ops[k].name, e->ops[k].pass ? "pass" : "halo",
+            s->op_max[k], s->op_mean[k], s->op_pairs[k]);
+  fprintf(f, "migration,time,%ld,%.6f,%.6f,\n", e->n_repartitions, s->migrate_max, s->migrate_mean);
+  fprintf(f, "output,time,,%.6f,,\n", s->output_max);
+  fprintf(f, "dropped_operations,time,,%.6f,%.6f,\n", s->dropped_max, s->dropped_mean);
+  for (int r = 0; r < e->n_ranks; r++)
+    fprintf(f, "rss_peak_rank%d,memory,%.0f,,,\nrss_end_rank%d,memory,%.0f,,,\n", r,
+            s->rss_peak[2 * r], r, s->rss_peak[2 * r + 1]);
+}
+
+/* Rank 0: write OUTDIR/timings.csv through a temporary name; a failure is only reported. */
+static void write_timings(const struct engine *e, const struct run_summary *s) {
+  if (!e->outdir) return;
+  size_t len = strlen(e->outdir) + 32;
+  char *path = malloc(len), *tmp = malloc(len);
+  snprintf(path, len, "%s/timings.csv", e->outdir);
+  snprintf(tmp, len, "%s/timings.csv.tmp", e->outdir);
+  FILE *f = fopen(tmp, "w");
+  if (f) write_rows(e, s, f);
+  if (!f || fclose(f) || rename(tmp, path))
+    fprintf(stderr, "mpsph: warning: cannot write %s\n", path);
+  free(path);
+  free(tmp);
+}
+
+static void print_summary(const struct engine *e, const struct run_summary *s) {
+  double rate = s->steps > 0 && s->loop_seconds > 0 ? s->n_fluid * (double)s->steps / s->loop_seconds : 0;
+  double rss_max = 0, rss_sum = 0;
+  for (int r = 0; r < e->n_ranks; r++) {
+    rss_max = rss_max > s->rss_peak[2 * r] ? rss_max : s->rss_peak[2 * r];
+    rss_sum += s->rss_peak[2 * r];
+  }
+  printf("summary: %ld steps in %.2f s on %d ranks; %.0f fluid + %.0f wall particles\n", s->steps,
+         s->loop_seconds, e->n_ranks, s->n_fluid, s->n_wall);
+  printf("  throughput: %.4g fluid particle-steps/s in total, %.4g per rank\n", rate, rate / e->n_ranks);
+  for (int k = 0; k < e->n_ops; k++) printf("  %6.2f s  %s\n", s->op_max[k], e->ops[k].name);
+  printf("  %6.2f s  migration, sort, halo rebuild (%ld re-partitions)\n", s->migrate_max, e->n_repartitions);
   printf("  %6.2f s  output\n", e->t_output);
   printf("  peak memory: %.1f MB on the largest rank, %.0f bytes per particle (all ranks)\n",
-         rss_max / 1e6, rss_sum / (n_fluid + n_wall));
+         rss_max / 1e6, rss_sum / (s->n_fluid + s->n_wall));
   fflush(stdout);
+}
+
+void engine_report(struct engine *e, long steps, double loop_seconds) {
+  struct run_summary s;
+  summarise(e, steps, loop_seconds, &s);
+  if (e->rank == 0) {
+    print_summary(e, &s);
+    write_timings(e, &s);
+  }
+  free(s.rss_peak);
 }

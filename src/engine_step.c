@@ -1,6 +1,7 @@
 /* engine_step.c — the stage pipeline, the RK4 step and the time-step limits (paper 000 Eq. 12). */
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 #include "eos.h"
 #include "passes.h"
 
@@ -97,7 +98,25 @@ static void damper_coefficients(struct engine *e) {
   }
 }
 
+/* After a re-assembly: the operations that stay keep their accumulated time and pairs (matched by
+ * name); the time of those dropped goes to e->t_dropped_ops. */
+static void carry_op_totals(struct engine *e, const struct stage_op *old, int n_old) {
+  for (int k = 0; k < n_old; k++) {
+    int kept = 0;
+    for (int j = 0; j < e->n_ops && !kept; j++)
+      if (!strcmp(e->ops[j].name, old[k].name)) {
+        e->ops[j].seconds += old[k].seconds;
+        e->ops[j].pairs += old[k].pairs;
+        kept = 1;
+      }
+    if (!kept) e->t_dropped_ops += old[k].seconds;
+  }
+}
+
 void engine_assemble(struct engine *e) {
+  struct stage_op old[ENGINE_MAX_OPS];
+  int n_old = e->n_ops;
+  memcpy(old, e->ops, sizeof old);
   unsigned f = e->features = case_features(e);
   e->moving_walls = 0;
   for (int w = 0; w < e->c->n_walls; w++) e->moving_walls |= e->c->walls[w].moving;
@@ -121,6 +140,7 @@ void engine_assemble(struct engine *e) {
   add_op(e, "halo: gradient-pass results", NULL,
          HF_GRAD_RHO | ((f & FEAT_SHIFT) ? HF_SHIFT : 0) | ((f & FEAT_DAMPER) ? HF_DIV : 0), 0);
   add_op(e, "fluid rhs: continuity and momentum", pass_fluid_rhs, 0, 0);
+  carry_op_totals(e, old, n_old);
   engine_work_reserve(e);
 }
 

@@ -1,0 +1,303 @@
+#!/usr/bin/env python3
+"""bench.py - the benchmark suite of issue 6 (`make bench`).
+
+Runs the single- and two-phase dam breaks at three sizes on 1 and 2 ranks (repeated), weak
+scaling 1 -> 2 -> 4 ranks, the scene with each optional term switched off, the single-phase scene
+through the multiphase and the SINGLE_PHASE=1 builds, one core's multiply-add peak and the HDF5
+snapshot bandwidth against a raw write; then writes doc/performance.md and doc/performance.csv
+from the measured numbers only (nothing in the report is typed in by hand).
+
+Usage: scripts/bench.py [--quick] [--repeats N] [--sizes N] [--out DIR]
+  --quick    small sizes and few steps (a few minutes); writes to build/bench/ unless --out
+  --sizes N  only the first N sizes of each scene (the smoke test uses 1)
+Needs build/mpsph, build/bench/peak_fma and build/bench/bench_hdf5 (make bench builds them)."""
+import argparse
+import csv
+import os
+import pickle
+import shutil
+import statistics
+import subprocess
+import sys
+import time
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+MPIRUN = os.path.join(ROOT, "scripts", "mpirun")
+CASES = {"1phase": "cases/dambreak-1phase/case.yaml", "2phase": "cases/dambreak-2phase/case.yaml"}
+
+# Floating-point operations per neighbour pair of the main pass (pass_fluid_rhs.c, fluid_sums),
+# counted by hand from the source for a same-phase fluid pair in 2D (the most frequent kind):
+# each +, -, *, / counts 1 (an FMA would count 2), loop-invariant products hoisted.
+#   distance and u_ji.r_ji 12, kernel F (inline exp 21, scaling 2) and V_j 24, pressure
+#   gradient 7, viscosity pi_ij 2 + 6, density diffusion psi_ij 6 + 5: 62 (single-phase scene,
+#   no shifting); with the delta-u terms (consistent shifting) the interface coefficients 5,
+#   du.gW sums 12 + 4 and the momentum delta-u term 14 add 35: 97 (two-phase scene).
+# Wall and other-phase pairs skip terms and rejected candidates (r >= support, 12 flops) are not
+# counted, so the flop rate derived from it is an estimate, not a hardware count.
+FLOPS_PER_PAIR = {"1phase": 62, "2phase": 97}
+MAIN_PASS = "fluid rhs"
+
+FULL = {"dx": {"1phase": [0.0085, 0.00424, 0.00212], "2phase": [0.024, 0.012, 0.006]},
+        "steps": [100, 40, 12], "weak_dx": [0.012, 0.0085, 0.006], "weak_steps": 20,
+        "term_dx": 0.012, "term_steps": 20, "sp_dx": 0.00424, "sp_steps": 60,
+        "hdf5_particles": [160000, 2000000], "repeats": 3, "peak_seconds": 2.0}
+QUICK = {"dx": {"1phase": [0.02, 0.0142, 0.01], "2phase": [0.024, 0.017, 0.012]},
+         "steps": [10, 8, 6], "weak_dx": [0.024, 0.017, 0.012], "weak_steps": 6,
+         "term_dx": 0.04, "term_steps": 6, "sp_dx": 0.01, "sp_steps": 10,
+         "hdf5_particles": [100000], "repeats": 2, "peak_seconds": 0.3}
+
+# The two-phase scene with every optional term on, and each term switched off in turn.
+TERMS_ON = ["physics.acoustic_damper=10", "physics.free_surface=on", "physics.tensile_control=true",
+            "physics.shifting=consistent", "domain.min=[-0.2,-0.2]", "domain.max=[3.416,2.0]"]
+TERMS_OFF = [("all terms on", []),
+             ("acoustic damper off", ["physics.acoustic_damper=0"]),
+             ("free-surface detection off", ["physics.free_surface=off"]),
+             ("tensile control off", ["physics.tensile_control=false"]),
+             ("delta-u terms off (position shifting)", ["physics.shifting=position"]),
+             ("shifting off", ["physics.shifting=none"]),
+             ("density diffusion delta = 0", ["physics.delta=0"]),
+             ("artificial viscosity = 0", ["physics.artificial_viscosity=0"])]
+
+
+def sh(cmd, **kw):
+    """Run cmd (list), return stdout; raise with its output on failure."""
+    r = subprocess.run(cmd, cwd=ROOT, capture_output=True, text=True, **kw)
+    if r.returncode:
+        raise RuntimeError("command failed (%d): %s\n%s%s" % (r.returncode, " ".join(cmd), r.stdout[-3000:], r.stderr[-3000:]))
+    return r.stdout
+
+
+def read_timings(path):
+    """OUTDIR/timings.csv (engine_report.c) as a list of row dicts."""
+    with open(path) as f:
+        return list(csv.DictReader(f))
+
+
+def num(x):
+    return float(x) if x not in ("", None) else 0.0
+
+
+def run_case(exe, case, dx, steps, ranks, work, sets=()):
+    """One run; returns the derived figures of its timings.csv."""
+    out = os.path.join(work, "run")
+    shutil.rmtree(out, ignore_errors=True)
+    cmd = [MPIRUN, "-n", str(ranks), exe, "run", CASES[case], "-o", out,
+           "--set", "resolution.dx=%g" % dx, "--set", "time.max_steps=%d" % steps,
+           "--set", "output.interval=0", "--set", "output.stats_interval=1e9",
+           "--set", "output.probes_interval=1e9", "--set", "output.progress_interval=1e9"]
+    for s in sets:
+        cmd += ["--set", s]
+    sh(cmd)
+    return derive(read_timings(os.path.join(out, "timings.csv")), case)
+
+
+def derive(rows, case):
+    """Per-run figures from the timings rows: rates per core, shares of the loop, memory."""
+    by = {r["name"]: r for r in rows}
+    ranks, steps = int(num(by["ranks"]["value"])), int(num(by["steps"]["value"]))
+    fluid, wall = num(by["fluid_particles"]["value"]), num(by["wall_particles"]["value"])
+    loop = num(by["loop"]["seconds_max"])
+    t_steps = num(by["steps_without_final_output"]["seconds_max"])
+    cpu = by.get("steps_without_final_output_cpu")
+    d = {"steps_cpu": num(cpu["seconds_mean"]) if cpu else t_steps, "ranks": ranks, "steps": steps, "fluid": fluid, "wall": wall, "loop_s": loop, "steps_s": t_steps,
+         "psps_core": fluid * steps / t_steps / ranks}
+    shares, halo = {}, 0.0
+    for r in rows:
+        if r["kind"] == "pass":
+            short = r["name"].split(":")[0].split(" (")[0]
+            shares[short] = num(r["seconds_mean"]) / loop
+            pairs = num(r["pairs"])
+            if pairs:
+                d["pairs/s/core " + short] = pairs / (num(r["seconds_mean"]) * ranks)
+                if short.startswith(MAIN_PASS):
+                    d["main_flops_core"] = pairs * FLOPS_PER_PAIR[case] / (num(r["seconds_mean"]) * ranks)
+                    d["pairs_per_particle_step"] = pairs / (fluid * steps * 4)
+        elif r["kind"] == "halo":
+            halo += num(r["seconds_mean"])
+    shares["halo exchange and wait"] = halo / loop
+    shares["migration, sort, re-partition"] = num(by["migration"]["seconds_mean"]) / loop
+    shares["operations dropped after step 1 (free surface auto: none found)"] = (
+        num(by["dropped_operations"]["seconds_mean"]) / loop if "dropped_operations" in by else 0.0)
+    shares["final output (snapshot + checkpoint)"] = (loop - t_steps) / loop
+    shares["other (time step, RK update, checks)"] = 1.0 - sum(shares.values())
+    d["shares"] = shares
+    peaks = [num(r["value"]) for r in rows if r["name"].startswith("rss_peak_rank")]
+    ends = [num(r["value"]) for r in rows if r["name"].startswith("rss_end_rank")]
+    d["bytes_per_particle_peak"] = sum(peaks) / (fluid + wall)
+    d["bytes_per_particle_end"] = sum(ends) / (fluid + wall)
+    d["rss_peak_max_rank"] = max(peaks)
+    d["rss_end_sum"] = sum(ends)
+    return d
+
+
+def repeat(n, fn):
+    """fn() n times; list of results."""
+    return [fn() for _ in range(n)]
+
+
+def stat(values):
+    """(median, min, max) of a list."""
+    return statistics.median(values), min(values), max(values)
+
+
+def machine():
+    """CPU model, cores, load average, commit, compiler."""
+    model = "unknown"
+    with open("/proc/cpuinfo") as f:
+        for line in f:
+            if line.startswith("model name"):
+                model = line.split(":", 1)[1].strip()
+                break
+    commit = sh(["git", "describe", "--always", "--dirty"]).strip()
+    cc = sh(["mpicc", "--version"]).splitlines()[0]
+    return {"cpu": model, "cores": os.cpu_count(), "load_start": os.getloadavg(), "commit": commit,
+            "compiler": cc, "date": time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime())}
+
+
+class Bench:
+    """Runs the benchmark groups and collects their results."""
+
+    def __init__(self, cfg, repeats, n_sizes, work, log):
+        self.cfg, self.repeats, self.n_sizes, self.work, self.log = cfg, repeats, n_sizes, work, log
+        self.res = {}
+
+    def say(self, msg):
+        self.log.write(msg + "\n")
+        self.log.flush()
+
+    def peak(self):
+        out = sh([os.path.join(ROOT, "build/bench/peak_fma"), str(self.cfg["peak_seconds"])])
+        return float(out.split()[1])
+
+    def sizes(self):
+        """Strong-scaling runs: every case and size on 1 and 2 ranks."""
+        cfg = self.cfg
+        for case in CASES:
+            for k, dx in enumerate(cfg["dx"][case][:self.n_sizes]):
+                for ranks in (1, 2):
+                    self.say("sizes: %s dx=%g ranks=%d" % (case, dx, ranks))
+                    runs = repeat(self.repeats, lambda: run_case("build/mpsph", case, dx, cfg["steps"][k], ranks, self.work))
+                    self.res[("size", case, k, ranks)] = runs
+
+    def weak(self):
+        """Two-phase scene with about the same particles per rank on 1, 2 and 4 ranks."""
+        for ranks, dx in zip((1, 2, 4), self.cfg["weak_dx"]):
+            self.say("weak: ranks=%d dx=%g" % (ranks, dx))
+            self.res[("weak", ranks)] = repeat(self.repeats, lambda: run_case(
+                "build/mpsph", "2phase", dx, self.cfg["weak_steps"], ranks, self.work))
+
+    def terms(self):
+        """The two-phase scene with every term on, then each switched off (1 rank); the variants
+        in turn within each repeat, so that a change of the machine's load hits all alike."""
+        for label, _ in TERMS_OFF:
+            self.res[("term", label)] = []
+        for rep in range(self.repeats):
+            for label, sets in TERMS_OFF:
+                self.say("terms: %s (repeat %d)" % (label, rep + 1))
+                self.res[("term", label)].append(run_case(
+                    "build/mpsph", "2phase", self.cfg["term_dx"], self.cfg["term_steps"], 1, self.work,
+                    TERMS_ON + sets))
+
+    def single_phase(self):
+        """Single-phase scene through the multiphase build and the SINGLE_PHASE=1 build,
+        interleaved so that load changes hit both alike."""
+        sp = os.path.join(ROOT, "build/bench/mpsph-single-phase")
+        a, b = [], []
+        for _ in range(self.repeats + 1):
+            self.say("single-phase variant")
+            a.append(run_case("build/mpsph", "1phase", self.cfg["sp_dx"], self.cfg["sp_steps"], 1, self.work))
+            b.append(run_case(sp, "1phase", self.cfg["sp_dx"], self.cfg["sp_steps"], 1, self.work))
+        self.res["sp"] = (a, b)
+
+    def hdf5(self):
+        """Snapshot write through io_hdf5 vs raw write of the same bytes, 1 and 2 ranks."""
+        tool = os.path.join(ROOT, "build/bench/bench_hdf5")
+        for n in self.cfg["hdf5_particles"]:
+            for ranks in (1, 2):
+                self.say("hdf5: n=%d ranks=%d" % (n, ranks))
+                out = sh([MPIRUN, "-n", str(ranks), tool, self.work, str(n), str(self.repeats + 2)])
+                t = {"hdf5": [], "raw": []}
+                nbytes = 0
+                for line in out.splitlines():
+                    kind, b, s = line.split()
+                    nbytes = int(b)
+                    t[kind].append(float(s))
+                # the first pair warms the file system up; it is dropped
+                self.res[("hdf5", n, ranks)] = (nbytes, t["hdf5"][1:], t["raw"][1:])
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--quick", action="store_true")
+    ap.add_argument("--repeats", type=int)
+    ap.add_argument("--sizes", type=int, default=3)
+    ap.add_argument("--out")
+    ap.add_argument("--only", help="comma-separated groups (sizes,weak,terms,single_phase,hdf5) to run "
+                    "again into the results saved by the last run; the report names them")
+    ap.add_argument("--report-only", action="store_true",
+                    help="rewrite the report from the results saved by the last run into the same --out "
+                    "(build/bench/work/results_<out>.pickle)")
+    a = ap.parse_args()
+    cfg = QUICK if a.quick else FULL
+    out = a.out or os.path.join(ROOT, "build/bench" if a.quick else "doc")
+    os.makedirs(out, exist_ok=True)
+    work = os.path.join(ROOT, "build/bench/work")
+    os.makedirs(work, exist_ok=True)
+    saved = os.path.join(work, "results_%s.pickle" % os.path.abspath(out).strip("/").replace("/", "_"))
+    if a.report_only:
+        with open(saved, "rb") as f:
+            b, m, peaks, cfg, quick = pickle.load(f)
+        report(b, m, peaks, cfg, quick, out)
+        return
+    if a.only:
+        rerun(a, saved, out)
+        return
+    sh(["make", "--no-print-directory", "build/mpsph", "build/bench/peak_fma", "build/bench/bench_hdf5",
+        "build/bench/mpsph-single-phase"])
+    t0 = time.time()
+    m = machine()
+    b = Bench(cfg, a.repeats or cfg["repeats"], a.sizes, work, sys.stdout)
+    peaks = [b.peak()]
+    b.sizes()
+    b.weak()
+    b.terms()
+    b.single_phase()
+    b.hdf5()
+    peaks.append(b.peak())
+    m["load_end"] = os.getloadavg()
+    m["seconds"] = time.time() - t0
+    b.log = None
+    with open(saved, "wb") as f:
+        pickle.dump((b, m, peaks, cfg, a.quick), f)
+    report(b, m, peaks, cfg, a.quick, out)
+
+
+def rerun(a, saved, out):
+    """Run the groups named by --only again into the saved results, then rewrite the report."""
+    with open(saved, "rb") as f:
+        b, m, peaks, cfg, quick = pickle.load(f)
+    sh(["make", "--no-print-directory", "build/mpsph", "build/bench/bench_hdf5", "build/bench/mpsph-single-phase"])
+    b.log = sys.stdout
+    t0, info = time.time(), machine()
+    for group in a.only.split(","):
+        getattr(b, group)()
+    info["load_end"] = os.getloadavg()
+    info["seconds"] = time.time() - t0
+    info["groups"] = a.only
+    m.setdefault("reruns", []).append(info)
+    b.log = None
+    with open(saved, "wb") as f:
+        pickle.dump((b, m, peaks, cfg, quick), f)
+    report(b, m, peaks, cfg, quick, out)
+
+
+def report(b, m, peaks, cfg, quick, out):
+    """Write out/performance.md and out/performance.csv."""
+    import bench_report
+    bench_report.write(b, m, peaks, cfg, quick, out, FLOPS_PER_PAIR, MAIN_PASS)
+    print("wrote %s/performance.md and performance.csv (suite run time %.0f s)" % (out, m["seconds"]))
+
+
+if __name__ == "__main__":
+    sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+    main()
