@@ -318,3 +318,49 @@ def standing_wave_decay(run, dx):
     notes = "energy decay rate %.3f 1/s vs %.3f 1/s from %d maxima; first maximum %.2f J/m (linear: %.2f)" % (
         gamma, decay, len(peaks), peaks[0, 1], 1000 * G * 0.05 ** 2 * 2.0 / 4)
     return abs(gamma / decay - 1), notes, {"t": t, "ke": ke, "peaks": peaks, "period": period, "decay": decay}
+
+
+# --- two-layer sloshing (paper 000 section 3.5) ----------------------------------------------
+
+def tank_displacement(path, x0_left):
+    """Horizontal displacement of a moving tank in a snapshot: the leftmost wall ghost's x minus
+    its value at t = 0 [m]."""
+    with h5py.File(path, "r") as f:
+        ph, x = f["particles/phase"][:], f["particles/position"][:, 0]
+    return x[ph < 0].min() - x0_left
+
+
+def column_interface(s, x_gauge, dx, lower=0, base=0.10):
+    """Elevation of the top of the lower phase above its rest level `base` at x_gauge: the lower
+    phase's volume weighted by a hat function of half-width 2 dx centred on x_gauge, per unit of
+    the hat's integral (2 dx), minus base (smooth in the particles' positions) [m]."""
+    sel = s["phase"] == lower
+    hat = np.clip(1 - np.abs(s["position"][sel, 0] - x_gauge) / (2 * dx), 0, None)
+    return np.sum(hat * s["mass"][sel] / s["density"][sel]) / (2 * dx) - base
+
+
+def dominant_period(t, y, t_from):
+    """Twice the mean spacing of the upward and downward mean crossings of y after t_from [s]."""
+    keep = t >= t_from
+    t, y = t[keep], y[keep] - np.mean(y[keep])
+    k = np.nonzero(np.sign(y[1:]) != np.sign(y[:-1]))[0]
+    tc = t[k] - y[k] * (t[k + 1] - t[k]) / (y[k + 1] - y[k])
+    return 2 * np.mean(np.diff(tc)) if len(tc) > 2 else float("nan")
+
+
+def sloshing_period(run, dx, period=0.830, gauges=(0.10, 0.47), t_from=1.66):
+    """|T_SPH / T - 1| of the interface elevation at gauge WG2 (0.10 m from the left wall, in the
+    tank's frame), T_SPH its dominant period after two forcing periods, T the forcing period."""
+    paths = snapshots(run)
+    with h5py.File(paths[0], "r") as f:
+        x0_left = f["particles/position"][:, 0][f["particles/phase"][:] < 0].min()
+    rows = []
+    for path in paths:
+        t, s = read_snapshot(path)
+        shift = tank_displacement(path, x0_left)
+        rows.append([t] + [column_interface(s, g + shift, dx) for g in gauges])
+    rows = np.array(rows)
+    periods = [dominant_period(rows[:, 0], rows[:, 1 + k], t_from) for k in range(len(gauges))]
+    notes = "dominant period WG2 %.4f s, WG1 %.4f s (forcing %.3f s); interface amplitude WG2 %.1f mm" % (
+        periods[0], periods[1], period, 1000 * np.max(np.abs(rows[rows[:, 0] >= t_from, 1])))
+    return abs(periods[0] / period - 1), notes, {"t": rows[:, 0], "wg2": rows[:, 1], "wg1": rows[:, 2]}

@@ -92,3 +92,12 @@ def standing_wave(ax, items):
                 label="linear (Lamb)")
     ax.set_xlabel("t [s]")
     ax.set_ylabel("kinetic energy of the water [J/m]")
+
+
+def sloshing(ax, items):
+    """Interface elevation at WG2 (solid) and WG1 (dashed) in the tank's frame."""
+    for r, c in items:
+        line = ax.plot(c["t"], 1000 * c["wg2"], "-", lw=0.8, label=_label(r) + ", WG2")[0]
+        ax.plot(c["t"], 1000 * c["wg1"], "--", lw=0.8, color=line.get_color())
+    ax.set_xlabel("t [s]")
+    ax.set_ylabel("interface elevation [mm]")

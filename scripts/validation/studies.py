@@ -176,6 +176,19 @@ STUDIES += [
     },
 ]
 
+STUDIES.append({
+    "id": "two-layer-sloshing",
+    "case": "two-layer-sloshing",
+    "title": "Two-layer sloshing, oil over water (paper 000 section 3.5), interface at WG2",
+    "length": ("h1", 0.05),
+    "reference": "the response period of the forced sloshing, the forcing period 0.830 s (notes section 3.5)",
+    "error": "|T_SPH / T - 1| of the interface elevation at WG2 after t = 1.66 s; threshold 5 % (notes)",
+    "threshold": 0.05,
+    "metric": metrics.sloshing_period,
+    "rungs": [rung(0.01, 1, True), rung(0.005, 2), rung(0.0025, 2)],
+    "plot": "sloshing",
+})
+
 
 def case_path(study, r=None):
     """The case file of a study, or of one of its rungs."""
