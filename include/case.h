@@ -19,7 +19,8 @@ enum shape_kind { SHAPE_BOX = 0, SHAPE_CIRCLE, SHAPE_POLYGON };
 enum slip_kind { SLIP_FREE = 0, SLIP_NO };
 enum fluid_side { FLUID_INSIDE = 0, FLUID_OUTSIDE };
 enum shifting_kind { SHIFTING_NONE = 0, SHIFTING_CONSISTENT, SHIFTING_POSITION };
-enum probe_kind { PROBE_PRESSURE = 0 };
+enum probe_kind { PROBE_PRESSURE = 0, PROBE_ELEVATION, PROBE_INTEGRAL };
+enum probe_interpolation { INTERP_SHEPARD = 0, INTERP_MLS };
 enum free_surface_mode { FREE_SURFACE_AUTO = 0, FREE_SURFACE_ON, FREE_SURFACE_OFF };
 enum damper_form { DAMPER_DIFFERENCE = 0, DAMPER_SYMMETRIC };
 enum init_pressure { INIT_PRESSURE_HYDROSTATIC = 0, INIT_PRESSURE_ZERO };
@@ -63,12 +64,20 @@ struct wall {
   struct wall_motion motion;
 };
 
-/** A probe read at probes.output interval. */
+/** A probe read at the output.probes_interval: a pressure sensor (a point, or in 2D a segment of
+ *  length diameter along axis centred on position), a wave gauge (elevation of the top of phase
+ *  along the vertical line through position) or the integrals over one phase. */
 struct probe {
   char name[CASE_MAX_NAME];
   enum probe_kind kind;
-  double position[3];
+  double position[3];        /* pressure, elevation [m] */
+  double diameter;           /* pressure: sensor face [m]; 0 = a point */
+  double axis[3];            /* pressure with diameter > 0: direction of the face (not normalised) */
+  enum probe_interpolation interpolation;   /* pressure */
+  int phase;                 /* elevation, integral: index into case.phases */
 };
+
+#define PROBE_MAX_COLUMNS 6   /* probes.csv columns of one probe (an integral in 3D) */
 
 /** The complete case. Every field has its default filled in after case_load. */
 struct case_def {

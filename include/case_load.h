@@ -21,4 +21,8 @@ int case_load_string(const char *text, size_t len, const char *source, int n_set
  *  text again gives the same case. */
 char *case_to_yaml(const struct case_def *c);
 
+/** The number of probes.csv columns of probe k of c (1, or 3 + dimension for an integral) and,
+ *  if buf is not NULL, the name of column col (< that number) in buf. */
+int case_probe_column(const struct case_def *c, int k, int col, char *buf, size_t len);
+
 #endif

@@ -1,5 +1,6 @@
 /* motion.h — prescribed rigid motion of a wall: a translation and (2D) a rotation about a centre,
- * each a sinusoid switched on by a ramp. Tank sloshing cases move their walls with it. */
+ * each a sinusoid switched on by a ramp, or a table of time, displacement and angle interpolated
+ * by cubic splines. Tank sloshing cases move their walls with it. */
 #ifndef MPSPH_MOTION_H
 #define MPSPH_MOTION_H
 
@@ -18,10 +19,17 @@ struct motion_law {
   double ramp_time;      /* [s] */
 };
 
-/** The motion of a wall: x(t) = c + d(t) + R(theta(t)) (X - c) for a body point X at t = 0. */
+#define MOTION_MAX_ROWS 256
+#define MOTION_TABLE_COLUMNS 5   /* t [s], dx, dy, dz [m], theta [rad] */
+
+/** The motion of a wall: x(t) = c + d(t) + R(theta(t)) (X - c) for a body point X at t = 0.
+ *  With n_rows > 0 the table gives d and theta (the laws are then inactive): rows of
+ *  MOTION_TABLE_COLUMNS values at strictly increasing times, dz = 0 in 2D. */
 struct wall_motion {
   struct motion_law translation, rotation;
   double centre[3];      /* rotation centre at t = 0 [m] */
+  int n_rows;            /* rows of the table, 0 = no table */
+  double table[MOTION_MAX_ROWS][MOTION_TABLE_COLUMNS];
 };
 
 /** The wall's frame at one time: displacement, velocity and acceleration of the centre, angle
@@ -32,7 +40,11 @@ struct frame {
   double centre[3];                    /* rotation centre at t = 0 [m] */
 };
 
-/** Evaluate the frame of motion m at time t [s]. A motion with no active law is the identity. */
+/** Evaluate the frame of motion m at time t [s]. A motion with no active law is the identity.
+ *  A table is interpolated per column by the cubic spline through its rows with zero first
+ *  derivative at the first and last rows (clamped): displacement, velocity and acceleration
+ *  are continuous inside the table (C2); before the first row and after the last the wall rests
+ *  at that row's displacement and angle, so only the acceleration jumps there. */
 void motion_frame(const struct wall_motion *m, double t, struct frame *f);
 
 /** The position at the frame's time of the body point x_ref (its position at t = 0) [m]. */

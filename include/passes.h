@@ -34,6 +34,13 @@ struct shepard {
   double w_phase[CASE_MAX_PHASES];
 };
 
+/** Called for each slot j within the kernel support of a point, with wv = W V_j [-]. */
+typedef void (*near_fn)(void *ctx, const struct engine *e, long j, double wv);
+
+/** Call fn for every fluid particle (and wall ghost if with_walls) within the kernel support of
+ *  xs, over the cells around xs's cell in global cell order; returns the number of calls. */
+long visit_near(const struct engine *e, const double *xs, int with_walls, near_fn fn, void *ctx);
+
 /** Shepard sums at xs over the fluid particles (and the wall ghosts if with_walls) of the cells
  *  around xs's cell; counts the pairs into *pairs. */
 void shepard_at(const struct engine *e, const double *xs, int with_walls, struct shepard *s,

@@ -25,7 +25,8 @@ static const char *const SHAPE_NAMES[] = {"box", "circle", "polygon", NULL};
 static const char *const SLIP_NAMES[] = {"free", "no", NULL};
 static const char *const SIDE_NAMES[] = {"inside", "outside", NULL};
 static const char *const SHIFTING_NAMES[] = {"none", "consistent", "position", NULL};
-static const char *const PROBE_KIND_NAMES[] = {"pressure", NULL};
+static const char *const PROBE_KIND_NAMES[] = {"pressure", "elevation", "integral", NULL};
+static const char *const INTERP_NAMES[] = {"shepard", "mls", NULL};
 static const char *const PRESSURE_NAMES[] = {"hydrostatic", "zero", NULL};
 static const char *const BOOL_NAMES[] = {"false", "true", NULL};
 static const char *const FREE_SURFACE_NAMES[] = {"auto", "on", "off", NULL};
@@ -49,7 +50,7 @@ static const char *const FLUID_KEYS[] = {"phase", "box", "circle", "polygon", "v
                                          "velocity_gradient", NULL};
 static const char *const POTENTIAL_KEYS[] = {"omega", "centre", NULL};
 static const char *const WALL_KEYS[] = {"box", "circle", "polygon", "slip", "fluid_side", "motion", NULL};
-static const char *const MOTION_KEYS[] = {"translation", "rotation", NULL};
+static const char *const MOTION_KEYS[] = {"translation", "rotation", "table", "centre", NULL};
 static const char *const TRANSLATION_KEYS[] = {"amplitude", "period", "phase", "ramp", NULL};
 static const char *const ROTATION_KEYS[] = {"amplitude", "period", "phase", "ramp", "centre", NULL};
 static const char *const RAMP_KEYS[] = {"shape", "time", NULL};
@@ -58,7 +59,8 @@ static const char *const PHYSICS_KEYS[] = {"delta", "artificial_viscosity", "aco
                                            "surface_band", "interface_mode", "damper_form",
                                            "interface_sharpness", "limit_surface_shifting", NULL};
 static const char *const INITIAL_KEYS[] = {"pressure", NULL};
-static const char *const PROBE_KEYS[] = {"name", "kind", "position", NULL};
+static const char *const PROBE_KEYS[] = {"name", "kind", "position", "diameter", "axis",
+                                         "interpolation", "phase", NULL};
 static const char *const PARALLEL_KEYS[] = {"repartition_threshold", "repartition_every", NULL};
 
 static const char *const ALNUM = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789";
@@ -555,15 +557,53 @@ static int read_law(const struct map *motion, const char *key, const char *const
          read_ramp(m, l);
 }
 
+/* The rows of the motion table under key: [t, dx, dy, theta] in 2D, [t, dx, dy, dz, theta] in
+ * 3D, 2 to MOTION_MAX_ROWS of them at strictly increasing times. */
+static int read_table(const struct map *m, struct wall_motion *w) {
+  char path[PATH_LEN], ipath[PATH_LEN], expected[96];
+  const struct ynode *seq;
+  int dim = m->ld->dim, n = dim + 2;
+  double row[MOTION_TABLE_COLUMNS];
+  if (list(m, "table", 2, MOTION_MAX_ROWS, "rows [t, displacement..., theta]", &seq, path)) return 1;
+  snprintf(expected, sizeof expected, "a row of %d numbers [t, %s, theta]", n,
+           dim == 2 ? "dx, dy" : "dx, dy, dz");
+  w->n_rows = seq->n;
+  for (int i = 0; i < seq->n; i++) {
+    join_index(ipath, path, i);
+    if (vec_of(m->ld, seq->entries[i].value, ipath, n, expected, row)) return 1;
+    double *t = w->table[i];
+    t[0] = row[0], t[1] = row[1], t[2] = row[2], t[3] = dim == 3 ? row[3] : 0, t[4] = row[n - 1];
+    if (i > 0 && !(t[0] > w->table[i - 1][0]))
+      return fail(m->ld, seq->entries[i].value, ipath, "got time %g after %g, expected strictly "
+                  "increasing times", t[0], w->table[i - 1][0]);
+  }
+  return 0;
+}
+
+/* A table motion: the table and its rotation centre (default the origin); no law beside it. */
+static int read_table_motion(const struct map *m, struct wall_motion *w) {
+  const struct ynode *law = ytree_get(m->node, "translation") ? ytree_get(m->node, "translation")
+                                                              : ytree_get(m->node, "rotation");
+  if (law)
+    return fail(m->ld, law, m->path, "got a table and a sinusoidal law, expected one of them");
+  return read_table(m, w) || vec(m, "centre", 0, w->centre);
+}
+
 /* The prescribed motion of a wall (absent: the wall is fixed). */
 static int read_motion(const struct map *wall, struct wall *w) {
   struct map m, translation, rotation;
+  char path[PATH_LEN];
   if (sub(wall, "motion", MOTION_KEYS, &m)) return 1;
   w->moving = m.node != NULL;
-  return w->moving &&
-         (read_law(&m, "translation", TRANSLATION_KEYS, 1, &w->motion.translation, &translation) ||
-          read_law(&m, "rotation", ROTATION_KEYS, 0, &w->motion.rotation, &rotation) ||
-          (w->motion.rotation.active && vec(&rotation, "centre", 1, w->motion.centre)));
+  if (!w->moving) return 0;
+  if (ytree_get(m.node, "table")) return read_table_motion(&m, &w->motion);
+  const struct ynode *centre = get(&m, "centre", path);
+  if (centre)
+    return fail(m.ld, centre, path, "got a centre without a table, expected rotation.centre for a "
+                "rotation law (motion.centre is the table's rotation centre)");
+  return read_law(&m, "translation", TRANSLATION_KEYS, 1, &w->motion.translation, &translation) ||
+         read_law(&m, "rotation", ROTATION_KEYS, 0, &w->motion.rotation, &rotation) ||
+         (w->motion.rotation.active && vec(&rotation, "centre", 1, w->motion.centre));
 }
 
 static int read_wall(const struct map *m, struct case_def *c, int i) {
@@ -577,16 +617,96 @@ static int read_wall(const struct map *m, struct case_def *c, int i) {
   return 0;
 }
 
+/* The keys of a probe item each kind reads (name and kind aside). */
+static const char *const PROBE_KIND_KEYS[][5] = {
+    {"position", "diameter", "axis", "interpolation", NULL},   /* pressure */
+    {"position", "phase", NULL},                               /* elevation */
+    {"phase", NULL}};                                          /* integral */
+
+/* Every key of probe item m is one its kind reads. */
+static int probe_keys(const struct map *m, enum probe_kind kind) {
+  for (int i = 0; i < m->node->n; i++) {
+    const struct yentry *e = &m->node->entries[i];
+    int known = strcmp(e->key, "name") == 0 || strcmp(e->key, "kind") == 0;
+    for (int k = 0; PROBE_KIND_KEYS[kind][k]; k++) known |= strcmp(e->key, PROBE_KIND_KEYS[kind][k]) == 0;
+    if (known) continue;
+    char path[PATH_LEN], names[LIST_LEN];
+    join(path, m->path, e->key);
+    return fail_at(m->ld, e->value->source, e->key_line, path, "not a key of kind %s, its keys: "
+                   "name, kind, %s", PROBE_KIND_NAMES[kind], names_list(PROBE_KIND_KEYS[kind], names));
+  }
+  return 0;
+}
+
+/* The face of a pressure sensor: diameter (0, a point, by default) and, when above 0 (2D
+ * only), the direction axis of the segment (any length but 0); both ends inside the domain. */
+static int sensor_face(const struct map *m, struct probe *p, const struct case_def *c) {
+  char path[PATH_LEN];
+  double len = 0, lo[3], hi[3];
+  if (num(m, "diameter", &R_NONNEGATIVE, 0, &p->diameter)) return 1;
+  const struct ynode *axis = get(m, "axis", path);
+  if (p->diameter == 0 && axis)
+    return fail(m->ld, axis, path, "got an axis for a point sensor, expected it only with a diameter > 0");
+  if (p->diameter == 0) return 0;
+  if (m->ld->dim != 2)
+    return fail(m->ld, get(m, "diameter", path), path, "got a diameter in 3D, expected 0 "
+                "(segment sensors are 2D only)");
+  if (vec(m, "axis", 1, p->axis)) return 1;
+  for (int d = 0; d < 2; d++) len += p->axis[d] * p->axis[d];
+  if (len == 0 || !isfinite(len)) return fail(m->ld, axis, path, "got a zero or overflowing vector, expected a direction of finite length");
+  for (int d = 0; d < 2; d++) {   /* the axis stays as given (the round trip); its unit vector: */
+    lo[d] = p->position[d] - 0.5 * p->diameter * p->axis[d] / sqrt(len);
+    hi[d] = p->position[d] + 0.5 * p->diameter * p->axis[d] / sqrt(len);
+  }
+  return inside(m, "diameter", lo, lo, c) || inside(m, "diameter", hi, hi, c);
+}
+
+/* A wave gauge needs a vertical: gravity not zero. */
+static int gravity_axis(const struct map *m, const struct case_def *c) {
+  char path[PATH_LEN];
+  for (int d = 0; d < c->dimension; d++)
+    if (c->gravity[d] != 0) return 0;
+  return fail(m->ld, get(m, "kind", path), path, "got an elevation probe with zero gravity, expected "
+              "a gravity (its direction is the gauge's vertical)");
+}
+
+/* The keys of probe p of the kind read. */
+static int probe_body(const struct map *m, struct probe *p, const struct case_def *c) {
+  int interp;
+  if (probe_keys(m, p->kind)) return 1;
+  if (p->kind == PROBE_INTEGRAL) return phase_index(m, c, &p->phase);
+  if (vec(m, "position", 1, p->position) || inside(m, "position", p->position, p->position, c))
+    return 1;
+  if (p->kind == PROBE_ELEVATION) return phase_index(m, c, &p->phase) || gravity_axis(m, c);
+  if (choice(m, "interpolation", INTERP_NAMES, INTERP_SHEPARD, &interp)) return 1;
+  p->interpolation = (enum probe_interpolation)interp;
+  return sensor_face(m, p, c);
+}
+
+/* The probes.csv columns of probe i differ from those of the earlier probes. */
+static int unique_columns(const struct map *m, const struct case_def *c, int i) {
+  char a[2 * CASE_MAX_NAME], b[2 * CASE_MAX_NAME], path[PATH_LEN];
+  for (int k = 0; k < case_probe_column(c, i, 0, NULL, 0); k++)
+    for (int j = 0; j < i; j++)
+      for (int l = 0; l < case_probe_column(c, j, 0, NULL, 0); l++) {
+        case_probe_column(c, i, k, a, sizeof a);
+        case_probe_column(c, j, l, b, sizeof b);
+        if (strcmp(a, b) == 0)
+          return fail(m->ld, get(m, "name", path), path, "gives the probes.csv column '%s' of "
+                      "probe %d a second time, expected unique columns", a, j);
+      }
+  return 0;
+}
+
 static int read_probe(const struct map *m, struct case_def *c, int i) {
   struct probe *p = &c->probes[i];
   int kind;
   if (text(m, "name", PROBE_PUNCT, NULL, sizeof p->name, p->name) ||
       unique_name(m, c->probes[0].name, sizeof c->probes[0], i) ||
-      choice(m, "kind", PROBE_KIND_NAMES, PROBE_PRESSURE, &kind) ||
-      vec(m, "position", 1, p->position))
+      choice(m, "kind", PROBE_KIND_NAMES, PROBE_PRESSURE, &kind))
     return 1;
   p->kind = (enum probe_kind)kind;
-  return inside(m, "position", p->position, p->position, c);
+  return probe_body(m, p, c) || unique_columns(m, c, i);
 }
 
 static int read_top(struct map *m, struct case_def *c) {
@@ -775,6 +895,17 @@ int case_load(const char *path, int n_sets, char *const *sets, struct case_def *
   return rc;
 }
 
+/* Column suffixes of an integral probe. */
+static const char *const INTEGRAL_COLUMNS[] = {"volume", "kinetic", "potential", "com_x", "com_y", "com_z"};
+
+int case_probe_column(const struct case_def *c, int k, int col, char *buf, size_t len) {
+  const struct probe *p = &c->probes[k];
+  int n = p->kind == PROBE_INTEGRAL ? 3 + c->dimension : 1;
+  if (buf && p->kind == PROBE_INTEGRAL) snprintf(buf, len, "%s_%s", p->name, INTEGRAL_COLUMNS[col]);
+  else if (buf) snprintf(buf, len, "%s", p->name);
+  return n;
+}
+
 /* ---- writing ---- */
 
 /* The shortest of %.15g, %.16g, %.17g that reads back as x exactly. */
@@ -920,8 +1051,26 @@ static void put_law(FILE *f, const char *key, const struct motion_law *l, int ve
   put_num(f, "          ", "time", l->ramp_time);
 }
 
+/* The rows of a motion table, one flow list per line. */
+static void put_table(FILE *f, const struct wall_motion *m, int dim) {
+  fputs("      table:\n", f);
+  for (int i = 0; i < m->n_rows; i++) {
+    double row[MOTION_TABLE_COLUMNS] = {m->table[i][0], m->table[i][1], m->table[i][2]};
+    row[3] = dim == 3 ? m->table[i][3] : m->table[i][4];
+    row[4] = m->table[i][4];
+    fputs("        - ", f);
+    put_flow_vec(f, row, dim + 2);
+    fputc('\n', f);
+  }
+  put_vec(f, "      ", "centre", m->centre, dim);
+}
+
 static void put_motion(FILE *f, const struct wall_motion *m, int dim) {
   fputs("    motion:\n", f);
+  if (m->n_rows > 0) {
+    put_table(f, m, dim);
+    return;
+  }
   put_law(f, "translation", &m->translation, 1, dim);
   put_law(f, "rotation", &m->rotation, 0, dim);
   if (m->rotation.active) put_vec(f, "        ", "centre", m->centre, dim);
@@ -961,6 +1110,19 @@ static void put_bodies(FILE *f, const struct case_def *c) {
   }
 }
 
+/* The keys of one probe after its name. */
+static void put_probe(FILE *f, const struct probe *p, const struct case_def *c) {
+  put_word(f, "    ", "kind", PROBE_KIND_NAMES[p->kind]);
+  if (p->kind != PROBE_INTEGRAL) put_vec(f, "    ", "position", p->position, c->dimension);
+  if (p->kind != PROBE_PRESSURE) {
+    put_str(f, "    ", "phase", c->phases[p->phase].name);
+    return;
+  }
+  put_word(f, "    ", "interpolation", INTERP_NAMES[p->interpolation]);
+  put_num(f, "    ", "diameter", p->diameter);
+  if (p->diameter > 0) put_vec(f, "    ", "axis", p->axis, c->dimension);
+}
+
 static void put_tail(FILE *f, const struct case_def *c) {
   fputs("physics:\n", f);
   put_num(f, "  ", "delta", c->delta);
@@ -980,8 +1142,7 @@ static void put_tail(FILE *f, const struct case_def *c) {
   put_list_key(f, "probes", c->n_probes);
   for (int i = 0; i < c->n_probes; i++) {
     put_str(f, "  - ", "name", c->probes[i].name);
-    put_word(f, "    ", "kind", PROBE_KIND_NAMES[c->probes[i].kind]);
-    put_vec(f, "    ", "position", c->probes[i].position, c->dimension);
+    put_probe(f, &c->probes[i], c);
   }
   fputs("parallel:\n", f);
   put_num(f, "  ", "repartition_threshold", c->repartition_threshold);

@@ -296,6 +296,7 @@ int engine_run(struct engine *e) {
     report(e, "run stopped: the state became unstable; writing the failing and the last good state");
     if (engine_write_failure(e)) status = 3;
   }
+  if (signo && engine_finished(e)) signo = 0;   /* a signal during the last step: a normal end */
   if (!status && !signo) status = engine_output(e, 1);
   if (!status) status = engine_checkpoint_write(e);
   if (!status) report_end(e, signo, e->step - first_step);

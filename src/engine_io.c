@@ -13,6 +13,7 @@
 #include "io_hdf5.h"
 #include "outdir.h"
 #include "passes.h"
+#include "probes.h"
 
 /* Write text to dir/name through a temporary file. Returns 0 or -1. */
 static int write_text_file(const char *dir, const char *name, const char *text) {
@@ -64,13 +65,6 @@ static void stats_header(const struct engine *e) {
   fflush(e->stats);
 }
 
-static void probes_header(const struct engine *e) {
-  fprintf(e->probes, "step,time");
-  for (int k = 0; k < e->c->n_probes; k++) fprintf(e->probes, ",%s", e->c->probes[k].name);
-  fprintf(e->probes, "\n");
-  fflush(e->probes);
-}
-
 /* Rank 0: open stats.csv and probes.csv (if the case has probes), headers on new files.
  * Returns 0 or 1 with a message. */
 static int open_tables(struct engine *e) {
@@ -82,7 +76,7 @@ static int open_tables(struct engine *e) {
     return 1;
   }
   if (fresh_stats) stats_header(e);
-  if (fresh_probes) probes_header(e);
+  if (fresh_probes) probes_write_header(e->probes, e->c);
   return 0;
 }
 
@@ -203,31 +197,6 @@ static void write_stats(struct engine *e) {
   fflush(e->stats);
 }
 
-/* Shepard pressure around x over fluid and wall ghost particles (the ghosts carry the pressure
- * extrapolated across the wall, so a probe on a wall reads the wall pressure); contributes only
- * on the rank owning x's cell. */
-static void probe_pressure(const struct engine *e, const double *x, double *num, double *den) {
-  struct shepard s;
-  long pairs = 0;
-  *num = *den = 0;
-  if (e->space.owner[grid_cell_clamped(&e->space.grid, x)] != e->rank) return;
-  shepard_at(e, x, 1, &s, &pairs);
-  *num = s.wp;
-  *den = s.w;
-}
-
-static void write_probes(struct engine *e) {
-  int n = e->c->n_probes;
-  double buf[2 * CASE_MAX_PROBES];
-  for (int k = 0; k < n; k++) probe_pressure(e, e->c->probes[k].position, &buf[2 * k], &buf[2 * k + 1]);
-  MPI_Reduce(e->rank ? buf : MPI_IN_PLACE, buf, 2 * n, MPI_DOUBLE, MPI_SUM, 0, e->comm);
-  if (e->rank) return;
-  fprintf(e->probes, "%ld,%.10g", e->step, e->time);
-  for (int k = 0; k < n; k++) fprintf(e->probes, ",%.8g", buf[2 * k + 1] > 0 ? buf[2 * k] / buf[2 * k + 1] : 0.0);
-  fprintf(e->probes, "\n");
-  fflush(e->probes);
-}
-
 /* 1 if an output of period `interval` is due at the current time (advances *next). */
 static int due(double time, double interval, double *next, int force) {
   if (!force && time < *next * (1 - 1e-12)) return 0;
@@ -250,7 +219,7 @@ int engine_output(struct engine *e, int force) {
   if (c->n_probes && due(e->time, c->probes_interval, &e->next_probes, force) &&
       e->last_probes_step != e->step) {
     e->last_probes_step = e->step;
-    write_probes(e);
+    probes_write_row(e, e->probes);
   }
   /* last, so that it holds the schedule advanced by this step's outputs; the end of the run
    * writes its own */

@@ -1,5 +1,6 @@
 /* motion.c — prescribed rigid wall motion: ramped sinusoids for the translation and the angle,
- * with their first and second time derivatives evaluated analytically. */
+ * or a table interpolated by clamped cubic splines, with their first and second time
+ * derivatives evaluated analytically. */
 #include <math.h>
 #include <string.h>
 #include "motion.h"
@@ -37,9 +38,65 @@ static void law_shape(const struct motion_law *l, double t, double *s) {
   s[2] = r[2] * sn + 2 * r[1] * w * cs - r[0] * w * w * sn;
 }
 
+/* The second derivatives M[0..n-1] at the rows of the clamped cubic spline of table column col
+ * (zero first derivative at the first and last rows): the tridiagonal system
+ * h_{i-1} M_{i-1} + 2 (h_{i-1} + h_i) M_i + h_i M_{i+1} = 6 (s_i - s_{i-1}), s_i the secant
+ * slopes, solved by the Thomas algorithm. */
+static void spline_moments(const struct wall_motion *m, int col, double *M) {
+  int n = m->n_rows;
+  double c[MOTION_MAX_ROWS], prev_h = 0, prev_s = 0;   /* c: the eliminated super-diagonal */
+  for (int i = 0; i < n; i++) {
+    double h = i < n - 1 ? m->table[i + 1][0] - m->table[i][0] : 0;
+    double s = i < n - 1 ? (m->table[i + 1][col] - m->table[i][col]) / h : 0;
+    double diag = 2 * (prev_h + h), rhs = 6 * (s - prev_s);
+    if (i > 0) {
+      diag -= prev_h * c[i - 1];
+      rhs -= prev_h * M[i - 1];
+    }
+    c[i] = h / diag;
+    M[i] = rhs / diag;
+    prev_h = h, prev_s = s;
+  }
+  for (int i = n - 2; i >= 0; i--) M[i] -= c[i] * M[i + 1];
+}
+
+/* Column col of the table at time t and its first two derivatives into q[0..2]: the clamped
+ * cubic spline through the rows; constant outside the table. */
+static void table_eval(const struct wall_motion *m, double t, int col, double *q) {
+  int n = m->n_rows, i = 0;
+  double M[MOTION_MAX_ROWS];
+  q[1] = q[2] = 0;
+  if (t <= m->table[0][0] || t >= m->table[n - 1][0]) {
+    q[0] = m->table[t <= m->table[0][0] ? 0 : n - 1][col];
+    return;
+  }
+  while (m->table[i + 1][0] <= t) i++;
+  spline_moments(m, col, M);
+  double h = m->table[i + 1][0] - m->table[i][0], a = m->table[i + 1][0] - t, b = t - m->table[i][0];
+  double ca = m->table[i][col] / h - M[i] * h / 6, cb = m->table[i + 1][col] / h - M[i + 1] * h / 6;
+  q[0] = (M[i] * a * a * a + M[i + 1] * b * b * b) / (6 * h) + ca * a + cb * b;
+  q[1] = (M[i + 1] * b * b - M[i] * a * a) / (2 * h) - ca + cb;
+  q[2] = (M[i] * a + M[i + 1] * b) / h;
+}
+
+/* The frame of a tabulated motion at time t. */
+static void table_frame(const struct wall_motion *m, double t, struct frame *f) {
+  double q[3];
+  for (int d = 0; d < 3; d++) {
+    table_eval(m, t, 1 + d, q);
+    f->d[d] = q[0], f->v[d] = q[1], f->a[d] = q[2];
+  }
+  table_eval(m, t, 4, q);
+  f->theta = q[0], f->omega = q[1], f->alpha = q[2];
+}
+
 void motion_frame(const struct wall_motion *m, double t, struct frame *f) {
   memset(f, 0, sizeof(*f));
   memcpy(f->centre, m->centre, sizeof(f->centre));
+  if (m->n_rows > 0) {
+    table_frame(m, t, f);
+    return;
+  }
   double s[3];
   if (m->translation.active) {
     law_shape(&m->translation, t, s);

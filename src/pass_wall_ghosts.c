@@ -6,12 +6,11 @@
 #include <string.h>
 #include "passes.h"
 
-void shepard_at(const struct engine *e, const double *xs, int with_walls, struct shepard *s,
-                long *pairs) {
+long visit_near(const struct engine *e, const double *xs, int with_walls, near_fn fn, void *ctx) {
   const struct parts *p = &e->p;
   struct neighbour_ranges r;
   int dim = p->dim;
-  memset(s, 0, sizeof(*s));
+  long n = 0;
   neighbour_ranges(&e->space, grid_cell_clamped(&e->space.grid, xs), &r);
   for (int k = 0; k < r.n; k++)
     for (long j = r.start[k]; j < r.start[k] + r.count[k]; j++) {
@@ -19,14 +18,27 @@ void shepard_at(const struct engine *e, const double *xs, int with_walls, struct
       double r2 = 0;
       for (int d = 0; d < dim; d++) r2 += (xs[d] - p->x[d][j]) * (xs[d] - p->x[d][j]);
       if (r2 >= e->kern.support2) continue;
-      double wv = kernel_w(&e->kern, r2) * p->m[j] / p->rho[j];
-      s->w += wv;
-      s->wp += wv * p->p[j];
-      s->wrho += wv * p->rho[j];
-      for (int d = 0; d < dim; d++) s->wu[d] += wv * p->v[d][j];
-      if (p->phase[j] != PHASE_WALL) s->w_phase[p->phase[j]] += wv;
-      (*pairs)++;
+      fn(ctx, e, j, kernel_w(&e->kern, r2) * p->m[j] / p->rho[j]);
+      n++;
     }
+  return n;
+}
+
+/* Add slot j with weight wv to the Shepard sums ctx. */
+static void add_shepard(void *ctx, const struct engine *e, long j, double wv) {
+  const struct parts *p = &e->p;
+  struct shepard *s = ctx;
+  s->w += wv;
+  s->wp += wv * p->p[j];
+  s->wrho += wv * p->rho[j];
+  for (int d = 0; d < p->dim; d++) s->wu[d] += wv * p->v[d][j];
+  if (p->phase[j] != PHASE_WALL) s->w_phase[p->phase[j]] += wv;
+}
+
+void shepard_at(const struct engine *e, const double *xs, int with_walls, struct shepard *s,
+                long *pairs) {
+  memset(s, 0, sizeof(*s));
+  *pairs += visit_near(e, xs, with_walls, add_shepard, s);
 }
 
 static int majority_phase(const struct engine *e, const struct shepard *s) {

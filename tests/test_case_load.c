@@ -302,11 +302,16 @@ static void same_lists(const struct case_def *a, const struct case_def *b) {
     same_shape(&a->walls[i].shape, &b->walls[i].shape, "wall shape");
     CHECK(a->walls[i].slip == b->walls[i].slip, "wall %d slip", i);
     CHECK(a->walls[i].fluid_side == b->walls[i].fluid_side, "wall %d side", i);
+    CHECK(memcmp(&a->walls[i].motion, &b->walls[i].motion, sizeof(a->walls[i].motion)) == 0 &&
+          a->walls[i].moving == b->walls[i].moving, "wall %d motion", i);
   }
   for (int i = 0; i < a->n_probes; i++) {
     CHECK(strcmp(a->probes[i].name, b->probes[i].name) == 0, "probe %d name", i);
     CHECK(a->probes[i].kind == b->probes[i].kind, "probe %d kind", i);
     same_vec(a->probes[i].position, b->probes[i].position, 3, "probe position");
+    same_vec(a->probes[i].axis, b->probes[i].axis, 3, "probe axis");
+    CHECK(a->probes[i].diameter == b->probes[i].diameter && a->probes[i].phase == b->probes[i].phase &&
+          a->probes[i].interpolation == b->probes[i].interpolation, "probe %d keys", i);
   }
 }
 
@@ -399,6 +404,65 @@ static void test_motion(void) {
                0, NULL, "walls.0.motion.translation.ramp.shape: got 'cosine'", "none, linear, smooth");
 }
 
+/* Probe kinds: their keys, the round trip, the keys of another kind, the sensor axis, the
+ * probes.csv columns. */
+static void test_probe_kinds(void) {
+  const char *probes = "  - {name: p0, position: [0.5, 0], diameter: 0.1, axis: [2, 0], interpolation: mls}\n"
+                       "  - {name: eta, kind: elevation, position: [0.3, 0.9], phase: water}\n"
+                       "  - {name: w, kind: integral, phase: water}\n";
+  char with_gravity[4096], col[128];
+  snprintf(with_gravity, sizeof with_gravity, "gravity: [0, -9.81]\n%s", variant(12, probes));
+  struct case_def c;
+  CHECK(load(with_gravity, 0, NULL, &c) == 0, "loads: %s", err);
+  CHECK(c.probes[0].diameter == 0.1 && c.probes[0].axis[0] == 2 && c.probes[0].interpolation == INTERP_MLS,
+        "segment sensor");
+  CHECK(c.probes[1].kind == PROBE_ELEVATION && c.probes[1].phase == 0, "gauge");
+  CHECK(c.probes[2].kind == PROBE_INTEGRAL && c.probes[2].phase == 0, "integral");
+  CHECK(case_probe_column(&c, 2, 4, col, sizeof col) == 5 && strcmp(col, "w_com_y") == 0, "column %s", col);
+  CHECK(c.probes[0].interpolation == INTERP_MLS, "mls");
+  round_trip(with_gravity);
+  expect_error(variant(12, "  - {name: e, kind: elevation, position: [0.5, 0], phase: water}"), 0, NULL,
+               "case.yaml:12: probes.0.kind: got an elevation probe with zero gravity", "expected a gravity");
+  expect_error(variant(12, "  - {name: e, kind: integral, phase: water, position: [0.5, 0]}"), 0, NULL,
+               "case.yaml:12: probes.0.position: not a key of kind integral", "its keys: name, kind, phase");
+  expect_error(variant(12, "  - {name: e, position: [0.5, 0], diameter: 0.1}"), 0, NULL,
+               "case.yaml:12: probes.0.axis: missing required key", "a list of 2 numbers");
+  expect_error(variant(12, "  - {name: e, position: [0.5, 0], axis: [1, 0]}"), 0, NULL,
+               "case.yaml:12: probes.0.axis: got an axis for a point sensor", "diameter > 0");
+  expect_error(variant(12, "  - {name: e, position: [0.5, 0], diameter: 0.1, axis: [0, 0]}"), 0, NULL,
+               "case.yaml:12: probes.0.axis: got a zero or overflowing vector", "a direction of finite length");
+  expect_error(variant(12, "  - {name: e, position: [0.5, 0], diameter: 0.1, axis: [0, 1]}"), 0, NULL,
+               "case.yaml:12: probes.0.diameter: got [0.5, -0.05] outside the domain", "inside the domain");
+  expect_error(variant(12, "  - {name: e, position: [0.5, 0], interpolation: linear}"), 0, NULL,
+               "case.yaml:12: probes.0.interpolation: got 'linear'", "shepard, mls");
+  expect_error(variant(12, "  - {name: w_volume, position: [0.5, 0]}\n  - {name: w, kind: integral, phase: water}"),
+               0, NULL, "case.yaml:13: probes.1.name: gives the probes.csv column 'w_volume'", "unique columns");
+}
+
+/* Wall motion by a table: the rows, the round trip, the errors. */
+static void test_motion_table(void) {
+  const char *table = "walls:\n  - box: {min: [0, 0], max: [1, 1]}\n    motion:\n      centre: [0.5, 0.2]\n"
+                      "      table: [[0, 0, 0, 0], [0.5, 0.01, 0, 0.02], [1, 0, 0.003, 0]]\n";
+  struct case_def c;
+  CHECK(load(variant(13, table), 0, NULL, &c) == 0, "loads: %s", err);
+  const struct wall_motion *m = &c.walls[0].motion;
+  CHECK(c.walls[0].moving && m->n_rows == 3 && m->table[1][1] == 0.01 && m->table[1][4] == 0.02 &&
+        m->table[2][2] == 0.003 && m->centre[0] == 0.5 && !m->translation.active, "table rows");
+  round_trip(variant(13, table));
+  expect_error(variant(13, "walls: [{box: {min: [0, 0], max: [1, 1]}, motion: {table: [[0, 0, 0, 0], [0, 1, 0, 0]]}}]"),
+               0, NULL, "case.yaml:13: walls.0.motion.table.1: got time 0 after 0", "strictly increasing");
+  expect_error(variant(13, "walls: [{box: {min: [0, 0], max: [1, 1]}, motion: {table: [[0, 0, 0]]}}]"),
+               0, NULL, "case.yaml:13: walls.0.motion.table: got a list of 1 item", "a list of 2 to 256");
+  expect_error(variant(13, "walls: [{box: {min: [0, 0], max: [1, 1]}, motion: {table: [[0, 0, 0], [1, 0, 0]]}}]"),
+               0, NULL, "case.yaml:13: walls.0.motion.table.0: got a list of 3 items", "a row of 4 numbers [t, dx, dy, theta]");
+  expect_error(variant(13, "walls: [{box: {min: [0, 0], max: [1, 1]}, motion: {table: [[0, 0, 0, 0], [1, 0, 0, 0]], "
+                           "translation: {amplitude: [1, 0], period: 1}}}]"),
+               0, NULL, "case.yaml:13: walls.0.motion: got a table and a sinusoidal law", "one of them");
+  expect_error(variant(13, "walls: [{box: {min: [0, 0], max: [1, 1]}, motion: {centre: [0, 0], "
+                           "translation: {amplitude: [1, 0], period: 1}}}]"),
+               0, NULL, "case.yaml:13: walls.0.motion.centre: got a centre without a table", "rotation.centre");
+}
+
 int main(void) {
   strcpy(dir, "/tmp/test_case_load.XXXXXX");
   if (!mkdtemp(dir)) return 1;
@@ -412,6 +476,8 @@ int main(void) {
   test_set();
   test_round_trip();
   test_motion();
+  test_probe_kinds();
+  test_motion_table();
   unlink(path);
   rmdir(dir);
   return check_report("test_case_load");
