@@ -1,0 +1,241 @@
+#!/usr/bin/env python3
+"""Runs the validation studies (scripts/validation/studies.py) on their ladders of resolutions and
+rank counts, measures each run's error against its reference and its wall-clock time, and writes
+doc/validation/README.md with a table per study, a comparison plot and an error-against-run-time
+plot (log-log, one line per scheme), plus results.csv beside it. Every number in the report is
+measured by this run (or read back from runs of an earlier invocation with --reuse).
+
+Usage: scripts/validate.py [--quick] [--only ID[,ID]] [--reuse] [--runs DIR] [--report DIR]
+  --quick   the cheap rungs only (make validate QUICK=1, about 20 min on 2 cores)
+  --coarsest  the first rung of each study only (the smoke test of make test)
+  --reuse   keep runs that finished in an earlier invocation (their recorded wall time is used)
+  --list    print the rungs with their commands and exit
+  --rung K  run only the K-th rung of the selection (0-based, as --list orders them), no report:
+            for job arrays; a later --reuse invocation writes the report from the runs
+MPSPH_LAUNCHER (default "scripts/mpirun -n {np}") starts the ranks, e.g. "srun -n {np}".
+"""
+import argparse
+import datetime
+import json
+import math
+import os
+import re
+import subprocess
+import sys
+import time
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import matplotlib  # noqa: E402
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+
+from validation import plots  # noqa: E402
+from validation.studies import STUDIES, case_path  # noqa: E402
+
+SUMMARY = re.compile(r"summary: (\d+) steps in ([\d.]+) s on (\d+) ranks; (\d+) fluid \+ (\d+) wall")
+
+
+def rung_dir(runs, study, r):
+    """Output folder of a rung."""
+    tag = re.sub(r"[^A-Za-z0-9.-]+", "_", r["label"]).strip("_")
+    return os.path.join(runs, study.get("runs", study["id"]), "%s_dx%g_np%d" % (tag, r["dx"], r["np"]))
+
+
+def command(study, r, out):
+    """The mpsph command line of a rung."""
+    launcher = os.environ.get("MPSPH_LAUNCHER", "scripts/mpirun -n {np}").format(np=r["np"]).split()
+    cmd = launcher + ["build/mpsph", "run", case_path(study, r), "-o", out,
+           "--set", "resolution.dx=%g" % r["dx"]]
+    for key, value in r["sets"].items():
+        cmd += ["--set", "%s=%s" % (key, value)]
+    return cmd
+
+
+def run_rung(study, r, out, reuse, done=set()):
+    """Run one rung (or reuse a run of this invocation, which studies may share, or with reuse a
+    finished earlier run). Returns the run record (status, steps, particles, wall time [s])."""
+    record_path = os.path.join(out, "validate.json")
+    if (reuse or out in done) and os.path.exists(record_path):
+        with open(record_path) as f:
+            return json.load(f)
+    os.makedirs(out, exist_ok=True)
+    cmd = command(study, r, out)
+    start = time.time()
+    with open(os.path.join(out, "mpsph.log"), "w") as log:
+        status = subprocess.call(cmd, stdout=log, stderr=subprocess.STDOUT)
+    wall = time.time() - start
+    rec = {"status": status, "wall": wall, "command": " ".join(cmd), "steps": 0, "fluid": 0, "wall_particles": 0}
+    with open(os.path.join(out, "mpsph.log")) as log:
+        m = SUMMARY.search(log.read())
+    if m:
+        rec.update(steps=int(m.group(1)), fluid=int(m.group(4)), wall_particles=int(m.group(5)))
+    with open(record_path, "w") as f:
+        json.dump(rec, f)
+    done.add(out)
+    return rec
+
+
+def evaluate(study, r, out, rec):
+    """Error, notes and curves of a finished rung (error nan with the reason if it failed)."""
+    if rec["status"] != 0:
+        return float("nan"), "run exited with status %d (see %s/mpsph.log)" % (rec["status"], out), None
+    try:
+        return study["metric"](out, r["dx"])
+    except Exception as exc:  # a metric that cannot be computed is reported, not hidden
+        return float("nan"), "metric failed: %s" % exc, None
+
+
+def verdict(err, threshold):
+    """pass / FAIL / n.a. of an error against its threshold."""
+    if not math.isfinite(err):
+        return "n.a."
+    return "pass" if err <= threshold else "FAIL"
+
+
+def run_study(study, args):
+    """Run and evaluate every selected rung of a study; returns the rows."""
+    rows = []
+    for r in study["rungs"]:
+        if args.quick and not r["quick"]:
+            continue
+        out = rung_dir(args.runs, study, r)
+        print("%s: %s dx = %g on %d ranks ..." % (study["id"], r["label"], r["dx"], r["np"]), flush=True)
+        rec = run_rung(study, r, out, args.reuse)
+        err, notes, curves = evaluate(study, r, out, rec)
+        print("  status %d, %d steps, %.0f s, error %.4g (%s): %s" % (
+            rec["status"], rec["steps"], rec["wall"], err, verdict(err, study["threshold"]), notes), flush=True)
+        rows.append({"rung": r, "rec": rec, "err": err, "notes": notes, "curves": curves, "out": out})
+    return rows
+
+
+def table(study, rows):
+    """The markdown table of a study."""
+    name, length = study["length"]
+    lines = ["| label | dx [m] | %s/dx | particles (fluid + wall) | ranks | steps | wall time [s] | "
+             "core-seconds | error | verdict | notes |" % name,
+             "|---|---|---|---|---|---|---|---|---|---|---|"]
+    for row in rows:
+        r, rec = row["rung"], row["rec"]
+        lines.append("| %s | %g | %.4g | %d + %d | %d | %d | %.1f | %.0f | %.4g | %s | %s |" % (
+            r["label"], r["dx"], length / r["dx"], rec["fluid"], rec["wall_particles"], r["np"], rec["steps"],
+            rec["wall"], rec["wall"] * r["np"], row["err"], verdict(row["err"], study["threshold"]),
+            row["notes"].replace("|", "/")))
+    return "\n".join(lines)
+
+
+def error_time_plot(study, rows, path):
+    """Error against wall-clock time, log-log, one line per label."""
+    fig, ax = plt.subplots(figsize=(5.5, 4))
+    labels = sorted({row["rung"]["label"] for row in rows})
+    for lab in labels:
+        pts = sorted((row["rec"]["wall"], row["err"]) for row in rows
+                     if row["rung"]["label"] == lab and math.isfinite(row["err"]) and row["err"] > 0)
+        if pts:
+            ax.loglog(*zip(*pts), "o-", label=lab)
+    ax.axhline(study["threshold"], color="k", ls="--", lw=0.8, label="threshold")
+    ax.set_xlabel("wall-clock time [s]")
+    ax.set_ylabel("error")
+    ax.set_title(study["id"], fontsize=9)
+    ax.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+
+
+def comparison_plot(study, rows, path):
+    """The physical comparison of the study (plots.py), every rung against the reference."""
+    fig, ax = plt.subplots(figsize=(6, 4))
+    getattr(plots, study["plot"])(ax, [(row["rung"], row["curves"]) for row in rows if row["curves"]])
+    ax.set_title(study["title"], fontsize=9)
+    if ax.get_legend_handles_labels()[0]:
+        ax.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+
+
+def git_commit():
+    """The commit the runs were made with (dirty marked)."""
+    try:
+        return subprocess.check_output(["git", "describe", "--always", "--dirty"], text=True).strip()
+    except (OSError, subprocess.CalledProcessError):
+        return "unknown"
+
+
+def write_report(args, results, seconds):
+    """doc/validation/README.md and results.csv from the measured rows."""
+    os.makedirs(args.report, exist_ok=True)
+    md = ["# Validation report", "",
+          "Generated by `make validate%s` (`scripts/validate.py`) on %s, commit `%s`, in %.0f s of wall "
+          "time on %d cores (load average at the end %.1f). Do not edit by hand: every number below is "
+          "measured by that command. Each case folder's README names its source and reference." % (
+              " QUICK=1" if args.quick else "", datetime.datetime.utcnow().strftime("%Y-%m-%d %H:%M UTC"),
+              git_commit(), seconds, os.cpu_count(), os.getloadavg()[0]), "",
+          "The error is the study's metric against its reference; *verdict* compares it with the "
+          "study's threshold. Wall time is that of `mpirun` including start-up; core-seconds = wall "
+          "time x ranks (this machine's ranks share 2 cores).", ""]
+    md += ["| study | finest rung run | error | threshold | verdict |", "|---|---|---|---|---|"]
+    for study, rows in results:
+        if rows:
+            last = min((x for x in rows if x["rung"]["label"] == rows[0]["rung"]["label"]),
+                       key=lambda x: x["rung"]["dx"])
+            md.append("| [%s](#%s) | %s, dx = %g | %.4g | %g | %s |" % (
+                study["id"], study["id"], last["rung"]["label"], last["rung"]["dx"], last["err"],
+                study["threshold"], verdict(last["err"], study["threshold"])))
+    csv = ["study,label,dx,np,fluid,wall,steps,wall_seconds,error,threshold,verdict"]
+    for study, rows in results:
+        if not rows:
+            continue
+        md += ["", "## %s" % study["id"], "", study["title"] + ".", "",
+               "- case: `%s`" % ", ".join(sorted({case_path(study, row["rung"]) for row in rows})), "- reference: %s" % study["reference"],
+               "- error: %s; threshold %g" % (study["error"], study["threshold"]), "",
+               table(study, rows), "",
+               "![comparison](%s_comparison.png) ![error against run time](%s_cost.png)" % (study["id"], study["id"])]
+        comparison_plot(study, rows, os.path.join(args.report, study["id"] + "_comparison.png"))
+        error_time_plot(study, rows, os.path.join(args.report, study["id"] + "_cost.png"))
+        for row in rows:
+            r, rec = row["rung"], row["rec"]
+            csv.append("%s,%s,%g,%d,%d,%d,%d,%.2f,%.6g,%g,%s" % (
+                study["id"], r["label"], r["dx"], r["np"], rec["fluid"], rec["wall_particles"], rec["steps"],
+                rec["wall"], row["err"], study["threshold"], verdict(row["err"], study["threshold"])))
+    md += ["", "## Commands", "", "Each rung's command line is in `%s/<study>/<rung>/validate.json`; "
+           "the full ladder runs with `make validate` (or `scripts/slurm/validate-sweep.sh` on a cluster)." % args.runs]
+    with open(os.path.join(args.report, "README.md"), "w") as f:
+        f.write("\n".join(md) + "\n")
+    with open(os.path.join(args.report, "results.csv"), "w") as f:
+        f.write("\n".join(csv) + "\n")
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--quick", action="store_true")
+    ap.add_argument("--only", default="")
+    ap.add_argument("--reuse", action="store_true")
+    ap.add_argument("--list", action="store_true")
+    ap.add_argument("--rung", type=int, default=-1)
+    ap.add_argument("--coarsest", action="store_true")
+    ap.add_argument("--runs", default="runs/validate")
+    ap.add_argument("--report", default="doc/validation")
+    args = ap.parse_args()
+    chosen = [s for s in STUDIES if not args.only or s["id"] in args.only.split(",")]
+    if args.coarsest:
+        chosen = [dict(s, rungs=s["rungs"][:1]) for s in chosen]
+    todo = [(s, r) for s in chosen for r in s["rungs"] if not args.quick or r["quick"]]
+    if args.list:
+        for k, (s, r) in enumerate(todo):
+            print(k, " ".join(command(s, r, rung_dir(args.runs, s, r))))
+        return 0
+    if args.rung >= 0:
+        s, r = todo[args.rung]
+        return run_rung(s, r, rung_dir(args.runs, s, r), args.reuse)["status"]
+    start = time.time()
+    results = [(s, run_study(s, args)) for s in chosen]
+    write_report(args, results, time.time() - start)
+    print("report: %s/README.md" % args.report)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

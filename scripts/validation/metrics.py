@@ -1,0 +1,366 @@
+"""Error metrics of the validated cases, computed from a run's own outputs (snapshots, probes.csv,
+stats.csv) against the reference stored in the case folder or an analytic solution coded here
+with its derivation cited. Every metric returns (error, notes, curves): the error in the unit its
+study states, a short text with secondary figures, and the curves the comparison plot draws."""
+import glob
+import math
+import os
+
+import h5py
+import numpy as np
+
+G = 9.81
+
+
+def snapshots(run):
+    """Sorted snapshot paths of a run folder."""
+    return sorted(glob.glob(os.path.join(run, "snap_*.h5")))
+
+
+def read_snapshot(path):
+    """Time [s] and the fluid particles (phase >= 0) of a snapshot: dict of arrays."""
+    with h5py.File(path, "r") as f:
+        t = float(f["header"].attrs["time"])
+        phase = f["particles/phase"][:]
+        keep = phase >= 0
+        data = {k: f["particles/" + k][:][keep] for k in ("position", "velocity", "density", "pressure", "mass")}
+    data["phase"] = phase[keep]
+    return t, data
+
+
+def read_csv(path):
+    """A CSV with a header row as a dict of float columns."""
+    with open(path) as f:
+        names = f.readline().strip().split(",")
+    rows = np.loadtxt(path, delimiter=",", skiprows=1, ndmin=2)
+    return {n: rows[:, k] for k, n in enumerate(names)}
+
+
+def read_reference(path):
+    """A reference CSV of ../shared/data layout (# comment block, then a header row)."""
+    with open(path) as f:
+        lines = [l for l in f if not l.startswith("#")]
+    names = lines[0].strip().split(",")
+    cols = [l.strip().split(",") for l in lines[1:] if l.strip()]
+    return {n: np.array([c[k] for c in cols]) for k, n in enumerate(names)}
+
+
+# --- two-phase hydrostatic tank (paper 000 section 3.1) -------------------------------------
+
+def hydrostatic_exact(y, h_w=1.0, rho_w=1000.0, rho_a=1.0):
+    """Pressure of water (0..Hw) under air (Hw..2Hw) with p = 0 at the lid [Pa]."""
+    return np.where(y >= h_w, rho_a * G * (2 * h_w - y), rho_a * G * h_w + rho_w * G * (h_w - y))
+
+
+def hydrostatic_centreline(run, dx):
+    """Max |p - p_exact| / (rho_w g Hw) over the particles within dx of x = Hw/2, 2 dx away from
+    the bottom and the lid, in the last snapshot (the acceptance of issue 3, notes section 3.1)."""
+    t, s = read_snapshot(snapshots(run)[-1])
+    x, y, p = s["position"][:, 0], s["position"][:, 1], s["pressure"]
+    sel = (np.abs(x - 0.5) < dx) & (y > 2 * dx) & (y < 2.0 - 2 * dx)
+    err = np.max(np.abs(p[sel] - hydrostatic_exact(y[sel]))) / (1000.0 * G)
+    order = np.argsort(y[sel])
+    wrong = np.sum((s["phase"] == 0) & (y > 1 + 3 * dx)) + np.sum((s["phase"] == 1) & (y < 1 - 3 * dx))
+    notes = "t = %.3g s; %d particles beyond 3dx of the interface" % (t, wrong)
+    return err, notes, {"y": y[sel][order], "p": p[sel][order]}
+
+
+# --- oscillating drop (paper 001 section III.B, notes section 3.8) --------------------------
+
+def drop_analytic(t_end, omega=1.0, radius=1.0, n=20000):
+    """RK4 of the incompressible elliptic drop: da/dt = A a, dA/dt = (A^2 + w^2)(b^2 - a^2)/(a^2 + b^2),
+    b = R^2/a, a(0) = R, A(0) = w (notes section 3.8). Returns t and a(t)."""
+    def rhs(q):
+        a, amp = q
+        b = radius * radius / a
+        return np.array([amp * a, (amp * amp + omega * omega) * (b * b - a * a) / (a * a + b * b)])
+    dt = t_end / n
+    q = np.array([radius, omega])
+    out = [q[0]]
+    for _ in range(n):
+        k1 = rhs(q)
+        k2 = rhs(q + 0.5 * dt * k1)
+        k3 = rhs(q + 0.5 * dt * k2)
+        k4 = rhs(q + dt * k3)
+        q = q + dt / 6 * (k1 + 2 * k2 + 2 * k3 + k4)
+        out.append(q[0])
+    return np.linspace(0, t_end, n + 1), np.array(out)
+
+
+def drop_semi_axis(run, dx, radius=1.0):
+    """Max |a_SPH - a| / R over the snapshots; a_SPH = 2 sqrt(<x^2>) of the drop (phase 0),
+    volume-weighted (exact for a uniform ellipse); R the drop's radius [m] (omega = 1)."""
+    ts, a_sph = [], []
+    for path in snapshots(run):
+        t, s = read_snapshot(path)
+        inner = s["phase"] == 0
+        vol = s["mass"][inner] / s["density"][inner]
+        xc = s["position"][inner, 0] - np.sum(vol * s["position"][inner, 0]) / vol.sum()
+        ts.append(t)
+        a_sph.append(2 * math.sqrt(np.sum(vol * xc * xc) / vol.sum()))
+    t_ref, a_ref = drop_analytic(max(ts), radius=radius)
+    err = np.max(np.abs(np.array(a_sph) - np.interp(ts, t_ref, a_ref))) / radius
+    return err, "%d snapshots to t = %.3g s" % (len(ts), max(ts)), {"t": np.array(ts), "a": np.array(a_sph),
+                                                                    "t_ref": t_ref, "a_ref": a_ref}
+
+
+# --- dam break: surge front (Martin and Moyce 1952) -----------------------------------------
+
+def front_position(s, dx, min_neighbours=2):
+    """x of the front: the largest x of a water particle with at least min_neighbours other water
+    particles within 1.5 dx (a lone spray particle does not count) [m]."""
+    x = s["position"][s["phase"] == 0]
+    order = np.argsort(-x[:, 0])
+    for i in order[:200]:
+        d2 = np.sum((x - x[i]) ** 2, axis=1)
+        if np.sum(d2 < (1.5 * dx) ** 2) - 1 >= min_neighbours:
+            return x[i, 0]
+    return x[order[0], 0]
+
+
+def dambreak_front(run, dx, column_width, reference):
+    """RMS over the experimental points of (Z_SPH - Z_exp) / Z_exp, Z = x_front / a at
+    T = t sqrt(2 g / a) (Martin and Moyce, n^2 = 2), the SPH front interpolated in T."""
+    ts, zs = [], []
+    for path in snapshots(run):
+        t, s = read_snapshot(path)
+        ts.append(t * math.sqrt(2 * G / column_width))
+        zs.append(front_position(s, dx) / column_width)
+    ref = read_reference(reference)
+    t_exp = ref["T_t_sqrt_2g_over_a"].astype(float)
+    z_exp = ref["Z_x_over_a"].astype(float)
+    use = t_exp <= max(ts)
+    z_sph = np.interp(t_exp[use], ts, zs)
+    err = math.sqrt(np.mean(((z_sph - z_exp[use]) / z_exp[use]) ** 2))
+    notes = "%d experimental points to T = %.2f; Z_SPH - Z_exp at the last: %+.2f" % (
+        use.sum(), t_exp[use].max(), z_sph[-1] - z_exp[use][-1])
+    return err, notes, {"t": np.array(ts), "z": np.array(zs), "t_ref": t_exp, "z_ref": z_exp}
+
+
+# --- dam break: first impact on the right wall (Buchner 2002, P1) ---------------------------
+
+def first_crossing(t, p, level):
+    """First t where p rises through level, linearly interpolated; nan if never."""
+    above = np.nonzero(p > level)[0]
+    if len(above) == 0:
+        return float("nan")
+    k = above[0]
+    if k == 0:
+        return t[0]
+    return t[k - 1] + (level - p[k - 1]) * (t[k] - t[k - 1]) / (p[k] - p[k - 1])
+
+
+def dambreak_impact(run, dx, reference, h=0.6, level=0.1):
+    """|t*_SPH - t*_exp| / t*_exp of the first rise of p* = p/(rho g H) at probe p1 through `level`,
+    t* = t sqrt(g/H), against Buchner's P1 (digitised). Notes: the peak p* of both up to t* = 3.2."""
+    pr = read_csv(os.path.join(run, "probes.csv"))
+    ts, ps = pr["time"] * math.sqrt(G / h), pr["p1"] / (1000.0 * G * h)
+    ref = read_reference(reference)
+    p1 = ref["sensor"] == "P1"
+    t_exp, p_exp = ref["t_star"][p1].astype(float), ref["p_star"][p1].astype(float)
+    arr_sph, arr_exp = first_crossing(ts, ps, level), first_crossing(t_exp, p_exp, level)
+    err = abs(arr_sph - arr_exp) / arr_exp
+    win = lambda t: (t < 3.2)
+    notes = "arrival t* %.3f vs %.3f (experiment); peak p* to t* = 3.2: %.2f vs %.2f" % (
+        arr_sph, arr_exp, ps[win(ts)].max(), p_exp[win(t_exp)].max())
+    stats_path = os.path.join(run, "stats.csv")
+    if os.path.exists(stats_path):
+        notes += "; " + volume_drift_text(read_csv(stats_path))
+    return err, notes, {"t": ts, "p": ps, "t_ref": t_exp, "p_ref": p_exp}
+
+
+def volume_drift_text(stats):
+    """Max |V/V0 - 1| of each phase's volume column of stats.csv, as text."""
+    parts = []
+    for name, v in stats.items():
+        if name.startswith("volume_"):
+            parts.append("%s volume drift %.3f %%" % (name[7:], 100 * np.max(np.abs(v / v[0] - 1))))
+    return ", ".join(parts)
+
+
+def volume_drift(run, dx, phase):
+    """Max |V/V0 - 1| of the phase's volume sum m/rho over the run (stats.csv)."""
+    st = read_csv(os.path.join(run, "stats.csv"))
+    v = st["volume_" + phase]
+    return np.max(np.abs(v / v[0] - 1)), volume_drift_text(st), {"t": st["time"], "v": v / v[0] - 1}
+
+
+# --- Rayleigh-Taylor (He, Chen and Zhang 1999 set-up) ----------------------------------------
+
+def rt_linear_rate(atwood, g, k, nu):
+    """Viscous linear growth rate sqrt(At g k + nu^2 k^4) - nu k^2 [1/s] (equal kinematic
+    viscosities nu; Chandrasekhar 1961, the approximation of notes seeds-003-004 C9)."""
+    return math.sqrt(atwood * g * k + nu * nu * k ** 4) - nu * k * k
+
+
+def rt_mode_amplitude(s, dx, width=1.0, base=2.0):
+    """Amplitude of cos(2 pi x / W) of the interface height, the height of each lattice column
+    (width dx) taken as the light phase's volume in it per column width [m]."""
+    light = s["phase"] == 1
+    x = s["position"][light, 0]
+    vol = s["mass"][light] / s["density"][light]
+    nb = int(round(width / dx))
+    edges = np.linspace(0, width, nb + 1)
+    height = np.histogram(x, edges, weights=vol)[0] / (width / nb)
+    xc = 0.5 * (edges[1:] + edges[:-1])
+    return 2.0 / nb * np.sum((height - base) * np.cos(2 * math.pi * xc / width))
+
+
+def rt_tips(s, dx):
+    """Spike tip (lowest heavy particle within 1.5 dx of x = W/2) and bubble tip (highest light
+    particle within 1.5 dx of the side walls) [m]."""
+    x, y, ph = s["position"][:, 0], s["position"][:, 1], s["phase"]
+    spike = y[(ph == 0) & (np.abs(x - 0.5) < 1.5 * dx)].min()
+    bubble = y[(ph == 1) & ((x < 1.5 * dx) | (x > 1 - 1.5 * dx))].max()
+    return spike, bubble
+
+
+def rt_series(run, dx):
+    """t, mode amplitude, spike and bubble tips of every snapshot."""
+    out = []
+    for path in snapshots(run):
+        t, s = read_snapshot(path)
+        out.append((t, rt_mode_amplitude(s, dx)) + rt_tips(s, dx))
+    return np.array(out)
+
+
+def rt_growth(run, dx, t_fit=0.6, atwood=0.5, nu=3.90625e-3):
+    """|sigma_fit - sigma_nu| / sigma_nu: sigma_fit from a(t) = a(0) cosh(sigma t) fitted (least
+    squares on arccosh(a/a0) = sigma t) over t <= t_fit; sigma_nu of the viscous linear theory."""
+    ser = rt_series(run, dx)
+    t, a = ser[:, 0], ser[:, 1]
+    use = (t > 0) & (t <= t_fit + 1e-9) & (a > a[0])
+    ratio = np.arccosh(a[use] / a[0])
+    sigma = np.sum(ratio * t[use]) / np.sum(t[use] ** 2)
+    sigma_nu = rt_linear_rate(atwood, 1.0, 2 * math.pi, nu)
+    notes = "sigma fit %.3f 1/s vs linear viscous %.3f 1/s over t <= %.2f (a0 k = %.2f)" % (
+        sigma, sigma_nu, t_fit, a[0] * 2 * math.pi)
+    return abs(sigma - sigma_nu) / sigma_nu, notes, {"t": t, "a": a, "sigma": sigma, "sigma_nu": sigma_nu}
+
+
+def rt_tip_positions(run, dx, reference):
+    """RMS over He et al.'s points (t* <= the run's end) of the spike and bubble tip positions'
+    differences, in units of the width W."""
+    ser = rt_series(run, dx)
+    ref = read_reference(reference)
+    t_ref = ref["t_star"].astype(float)
+    sp_ref, bu_ref = ref["y_spike_over_H"].astype(float), ref["y_bubble_over_H"].astype(float)
+    use = t_ref <= ser[-1, 0]
+    sp = np.interp(t_ref[use], ser[:, 0], ser[:, 2])
+    bu = np.interp(t_ref[use], ser[:, 0], ser[:, 3])
+    diff = np.concatenate([sp - sp_ref[use], bu - bu_ref[use]])
+    err = math.sqrt(np.mean(diff ** 2))
+    notes = "spike %.3f vs %.3f, bubble %.3f vs %.3f at t* = %.2f" % (
+        sp[-1], sp_ref[use][-1], bu[-1], bu_ref[use][-1], t_ref[use][-1])
+    return err, notes, {"t": ser[:, 0], "spike": ser[:, 2], "bubble": ser[:, 3], "t_ref": t_ref,
+                        "spike_ref": sp_ref, "bubble_ref": bu_ref}
+
+
+# --- two-phase standing wave (paper 003 section 4.2) -----------------------------------------
+
+def standing_wave_linear(k=2 * math.pi, depth=1.0, nu=6.264e-3):
+    """Linear standing wave: period T = 2 pi / sigma, sigma^2 = g k tanh(k d), and the energy
+    decay rate 4 nu k^2 of a free surface (Lamb 1932, section 348) [s, 1/s]."""
+    sigma = math.sqrt(G * k * math.tanh(k * depth))
+    return 2 * math.pi / sigma, 4 * nu * k * k
+
+
+def kinetic_maxima(t, ke, period):
+    """Times and values of the water's kinetic-energy maxima of a wave released from rest: the
+    largest value of the 5-point running mean within T/8 of each t = T/4 + n T/2, refined by a
+    parabola through it and its neighbours."""
+    smooth = np.convolve(ke, np.ones(5) / 5, mode="same")
+    out = []
+    for n in range(int((t[-1] - period / 4) / (period / 2)) + 1):
+        centre = period / 4 + n * period / 2
+        idx = np.nonzero(np.abs(t - centre) <= period / 8)[0]
+        if len(idx) < 5 or idx[-1] >= len(t) - 3:
+            break
+        k = idx[np.argmax(smooth[idx])]
+        y0, y1, y2 = smooth[k - 1], smooth[k], smooth[k + 1]
+        shift = 0.5 * (y0 - y2) / (y0 - 2 * y1 + y2) if y0 - 2 * y1 + y2 != 0 else 0.0
+        out.append((t[k] + shift * (t[k + 1] - t[k]), y1 - 0.25 * (y0 - y2) * shift))
+    return np.array(out)
+
+
+def standing_wave_series(run):
+    """t and the water's kinetic energy from stats.csv, the linear period and decay rate, and the
+    kinetic-energy maxima."""
+    st = read_csv(os.path.join(run, "stats.csv"))
+    period, decay = standing_wave_linear()
+    return st["time"], st["kinetic_energy_water"], period, decay, kinetic_maxima(st["time"], st["kinetic_energy_water"], period)
+
+
+def velocity_l2_at(run, t_target):
+    """sqrt(sum |u|^2 / N_w) of the water in the snapshot nearest t_target (003 Eq. 51) [m/s], and
+    the snapshot's time."""
+    best = min(snapshots(run), key=lambda p: abs(read_snapshot(p)[0] - t_target))
+    t, s = read_snapshot(best)
+    v = s["velocity"][s["phase"] == 0]
+    return math.sqrt(np.sum(v * v) / len(v)), t
+
+
+def standing_wave_period(run, dx):
+    """|T_SPH / T - 1|, T_SPH twice the mean spacing of the kinetic-energy maxima."""
+    t, ke, period, decay, peaks = standing_wave_series(run)
+    t_sph = 2 * np.mean(np.diff(peaks[:, 0]))
+    err_l2, t_l2 = velocity_l2_at(run, period / 2)
+    notes = "T = %.4f s vs %.4f s from %d maxima; water velocity L2 at t = %.2f s (motionless): %.4f m/s" % (
+        t_sph, period, len(peaks), t_l2, err_l2)
+    return abs(t_sph / period - 1), notes, {"t": t, "ke": ke, "peaks": peaks, "period": period, "decay": decay}
+
+
+def standing_wave_decay(run, dx):
+    """|gamma_SPH / gamma - 1|, gamma_SPH the least-squares slope of -ln KE_max over the maxima,
+    gamma = 4 nu k^2 (Lamb)."""
+    t, ke, period, decay, peaks = standing_wave_series(run)
+    gamma = -np.polyfit(peaks[:, 0], np.log(peaks[:, 1]), 1)[0]
+    notes = "energy decay rate %.3f 1/s vs %.3f 1/s from %d maxima; first maximum %.2f J/m (linear: %.2f)" % (
+        gamma, decay, len(peaks), peaks[0, 1], 1000 * G * 0.05 ** 2 * 2.0 / 4)
+    return abs(gamma / decay - 1), notes, {"t": t, "ke": ke, "peaks": peaks, "period": period, "decay": decay}
+
+
+# --- two-layer sloshing (paper 000 section 3.5) ----------------------------------------------
+
+def tank_displacement(path, x0_left):
+    """Horizontal displacement of a moving tank in a snapshot: the leftmost wall ghost's x minus
+    its value at t = 0 [m]."""
+    with h5py.File(path, "r") as f:
+        ph, x = f["particles/phase"][:], f["particles/position"][:, 0]
+    return x[ph < 0].min() - x0_left
+
+
+def column_interface(s, x_gauge, dx, lower=0, base=0.10):
+    """Elevation of the top of the lower phase above its rest level `base` at x_gauge: the lower
+    phase's volume weighted by a hat function of half-width 2 dx centred on x_gauge, per unit of
+    the hat's integral (2 dx), minus base (smooth in the particles' positions) [m]."""
+    sel = s["phase"] == lower
+    hat = np.clip(1 - np.abs(s["position"][sel, 0] - x_gauge) / (2 * dx), 0, None)
+    return np.sum(hat * s["mass"][sel] / s["density"][sel]) / (2 * dx) - base
+
+
+def dominant_period(t, y, t_from):
+    """Twice the mean spacing of the upward and downward mean crossings of y after t_from [s]."""
+    keep = t >= t_from
+    t, y = t[keep], y[keep] - np.mean(y[keep])
+    k = np.nonzero(np.sign(y[1:]) != np.sign(y[:-1]))[0]
+    tc = t[k] - y[k] * (t[k + 1] - t[k]) / (y[k + 1] - y[k])
+    return 2 * np.mean(np.diff(tc)) if len(tc) > 2 else float("nan")
+
+
+def sloshing_period(run, dx, period=0.830, gauges=(0.10, 0.47), t_from=1.66):
+    """|T_SPH / T - 1| of the interface elevation at gauge WG2 (0.10 m from the left wall, in the
+    tank's frame), T_SPH its dominant period after two forcing periods, T the forcing period."""
+    paths = snapshots(run)
+    with h5py.File(paths[0], "r") as f:
+        x0_left = f["particles/position"][:, 0][f["particles/phase"][:] < 0].min()
+    rows = []
+    for path in paths:
+        t, s = read_snapshot(path)
+        shift = tank_displacement(path, x0_left)
+        rows.append([t] + [column_interface(s, g + shift, dx) for g in gauges])
+    rows = np.array(rows)
+    periods = [dominant_period(rows[:, 0], rows[:, 1 + k], t_from) for k in range(len(gauges))]
+    notes = "dominant period WG2 %.4f s, WG1 %.4f s (forcing %.3f s); interface amplitude WG2 %.1f mm" % (
+        periods[0], periods[1], period, 1000 * np.max(np.abs(rows[rows[:, 0] >= t_from, 1])))
+    return abs(periods[0] / period - 1), notes, {"t": rows[:, 0], "wg2": rows[:, 1], "wg1": rows[:, 2]}

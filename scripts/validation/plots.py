@@ -1,0 +1,103 @@
+"""The comparison plots of the validation studies: each draws every rung's curve (from the
+metric's curves) and the reference on one axis. items: list of (rung, curves)."""
+import numpy as np
+
+from . import metrics
+
+
+def _label(r):
+    return "%s, dx = %g" % (r["label"], r["dx"])
+
+
+def hydrostatic(ax, items):
+    """Centreline pressure against height, with the exact profile."""
+    for r, c in items:
+        ax.plot(c["p"] / 1000.0, c["y"], ".", ms=3, label=_label(r))
+    y = np.linspace(0, 2, 200)
+    ax.plot(metrics.hydrostatic_exact(y) / 1000.0, y, "k-", lw=0.8, label="exact")
+    ax.set_xlabel("p [kPa]")
+    ax.set_ylabel("y [m]")
+
+
+def drop(ax, items):
+    """Semi-axis a(t) against the analytic solution."""
+    for r, c in items:
+        ax.plot(c["t"], c["a"], "o-", ms=3, label=_label(r))
+    if items:
+        c = items[-1][1]
+        ax.plot(c["t_ref"], c["a_ref"], "k-", lw=0.8, label="analytic")
+    ax.set_xlabel("t [s]")
+    ax.set_ylabel("a [m]")
+
+
+def front(ax, items):
+    """Surge front Z = x/a against T = t sqrt(2g/a), with Martin and Moyce's table."""
+    for r, c in items:
+        ax.plot(c["t"], c["z"], "-", label=_label(r))
+    if items:
+        c = items[-1][1]
+        ax.plot(c["t_ref"], c["z_ref"], "ks", ms=4, label="Martin & Moyce 1952")
+    ax.set_xlabel("T = t sqrt(2g/a)")
+    ax.set_ylabel("Z = x_front / a")
+
+
+def impact(ax, items):
+    """p* at probe p1 against t*, with Buchner's P1."""
+    for r, c in items:
+        ax.plot(c["t"], c["p"], "-", lw=0.8, label=_label(r))
+    if items:
+        c = items[-1][1]
+        ax.plot(c["t_ref"], c["p_ref"], "k.", ms=4, label="Buchner 2002 P1")
+    ax.set_xlim(1.5, 3.4)
+    ax.set_ylim(-0.2, 2.0)
+    ax.set_xlabel("t* = t sqrt(g/H)")
+    ax.set_ylabel("p* = p / (rho g H)")
+
+
+def rt_growth(ax, items):
+    """Mode amplitude a(t)/a0 against cosh(sigma_nu t)."""
+    for r, c in items:
+        ax.plot(c["t"], c["a"] / c["a"][0], "o-", ms=3, label=_label(r))
+    if items:
+        c = items[-1][1]
+        t = np.linspace(0, c["t"].max(), 100)
+        ax.plot(t, np.cosh(c["sigma_nu"] * t), "k-", lw=0.8, label="cosh(sigma_nu t), linear theory")
+    ax.set_xlabel("t [s]")
+    ax.set_ylabel("a / a0")
+
+
+def rt_tips(ax, items):
+    """Spike and bubble tips against He et al. 1999."""
+    for r, c in items:
+        line = ax.plot(c["t"], c["spike"], "-", label=_label(r))[0]
+        ax.plot(c["t"], c["bubble"], "-", color=line.get_color())
+    if items:
+        c = items[-1][1]
+        ax.plot(c["t_ref"], c["spike_ref"], "k.", ms=4, label="He et al. 1999 (LBM)")
+        ax.plot(c["t_ref"], c["bubble_ref"], "k.", ms=4)
+    ax.set_xlabel("t* = t sqrt(g/W)")
+    ax.set_ylabel("tip height / W")
+
+
+def standing_wave(ax, items):
+    """The water's kinetic energy against the linear solution E0 exp(-4 nu k^2 t) sin^2(sigma t)."""
+    for r, c in items:
+        line = ax.plot(c["t"], c["ke"], "-", lw=0.8, label=_label(r))[0]
+        ax.plot(c["peaks"][:, 0], c["peaks"][:, 1], "o", ms=3, color=line.get_color())
+    if items:
+        c = items[-1][1]
+        t = np.linspace(0, c["t"].max(), 600)
+        e0 = 1000 * 9.81 * 0.05 ** 2 * 2.0 / 4
+        ax.plot(t, e0 * np.exp(-c["decay"] * t) * np.sin(2 * np.pi * t / c["period"]) ** 2, "k-", lw=0.6,
+                label="linear (Lamb)")
+    ax.set_xlabel("t [s]")
+    ax.set_ylabel("kinetic energy of the water [J/m]")
+
+
+def sloshing(ax, items):
+    """Interface elevation at WG2 (solid) and WG1 (dashed) in the tank's frame."""
+    for r, c in items:
+        line = ax.plot(c["t"], 1000 * c["wg2"], "-", lw=0.8, label=_label(r) + ", WG2")[0]
+        ax.plot(c["t"], 1000 * c["wg1"], "--", lw=0.8, color=line.get_color())
+    ax.set_xlabel("t [s]")
+    ax.set_ylabel("interface elevation [mm]")

@@ -1,0 +1,195 @@
+"""The validation studies: for each, the case, its ladder of rungs (resolution, ranks, overrides),
+the metric against its reference, the threshold, and what the plots draw. `quick` marks the
+cheap rungs that `make validate QUICK=1` runs. A rung's `label` names its line in the
+error-against-run-time plot (the scheme, and the variant where a study compares variants)."""
+import functools
+import os
+
+from . import metrics
+
+DATA = "cases/{case}/reference/{file}"
+
+
+def rung(dx, np_=2, quick=False, label="delta-plus", case=None, **sets):
+    """One run of a study: spacing dx [m] on np_ ranks with extra --set overrides (of the study's
+    case, or of `case` when the rung runs a variant of it)."""
+    return {"dx": dx, "np": np_, "quick": quick, "label": label, "case": case, "sets": sets}
+
+
+HYDRO_DOMAIN = {"domain.min": "[-0.5,-0.5]", "domain.max": "[1.5,2.5]"}   # room for 4 ghost layers at dx = 0.1
+HYDRO_LONG = "delta-plus, t sqrt(g/Hw) = 40"
+DB2_COARSE = {"domain.min": "[-0.3,-0.3]", "domain.max": "[3.516,2.1]"}    # room for 4 ghost layers at dx = 0.048
+RT_RUNGS = [rung(dx, n, q, **{"time.end": 3.0, "output.interval": 0.05}) for dx, n, q in
+            ((0.04, 1, True), (0.02, 2, True), (0.01, 2, False))]
+
+STUDIES = [
+    {
+        "id": "hydrostatic-2phase",
+        "case": "hydrostatic-2phase",
+        "title": "Two-phase hydrostatic tank (paper 000 section 3.1)",
+        "length": ("Hw", 1.0),
+        "reference": "analytic hydrostatic pressure, water under air, p = 0 at the lid",
+        "error": "max centreline |p - p_exact| / (rho_w g Hw), last snapshot",
+        "threshold": 0.02,
+        "metric": metrics.hydrostatic_centreline,
+        "rungs": [rung(0.1, 1, True, **HYDRO_DOMAIN, **{"time.end": 1.0}),
+                  rung(0.05, 2, True, **{"time.end": 1.0}), rung(0.025, 2, **{"time.end": 1.0}),
+                  rung(0.1, 1, True, label=HYDRO_LONG, **HYDRO_DOMAIN, **{"time.end": 12.77}),
+                  rung(0.05, 2, label=HYDRO_LONG, **{"time.end": 12.77}),
+                  rung(0.04, 2, label=HYDRO_LONG, **{"time.end": 12.77})],
+        "plot": "hydrostatic",
+    },
+    {
+        "id": "oscillating-drop",
+        "case": "oscillating-drop",
+        "title": "Oscillating drop, one fluid (paper 001 section III.B)",
+        "length": ("R", 1.0),
+        "reference": "incompressible elliptic-drop solution (notes seeds-000-001 section 3.8)",
+        "error": "max |a_SPH - a| / R over one period",
+        "threshold": 0.02,
+        "metric": metrics.drop_semi_axis,
+        "rungs": [rung(0.08, 1, True, **{"output.interval": 0.1}), rung(0.04, 2, True, **{"output.interval": 0.1}),
+                  rung(0.02, 2, **{"output.interval": 0.1})],
+        "plot": "drop",
+    },
+    {
+        "id": "oscillating-drop-2fluid",
+        "case": "oscillating-drop-2fluid",
+        "title": "Oscillating drop in a lighter fluid, density ratio 100 (paper 001 section III.B)",
+        "length": ("R", 0.5),
+        "reference": "incompressible elliptic-drop solution (notes seeds-000-001 section 3.8)",
+        "error": "max |a_SPH - a| / R over one period",
+        "threshold": 0.02,
+        "metric": functools.partial(metrics.drop_semi_axis, radius=0.5),
+        "rungs": [rung(0.04, 2, True, **{"output.interval": 0.1}), rung(0.02, 2, **{"output.interval": 0.1}),
+                  rung(0.01, 2, **{"output.interval": 0.1})],
+        "plot": "drop",
+    },
+    {
+        "id": "dambreak-front",
+        "case": "dambreak-1phase",
+        "title": "Dam-break surge front, column a x 2a (Martin and Moyce 1952)",
+        "length": ("a", 0.3),
+        "reference": "Martin and Moyce 1952, Table 2 (experiment), reference/dambreak_surge_front_martin_moyce1952_table.csv",
+        "error": "RMS of (Z_SPH - Z_exp) / Z_exp over the experimental points, Z = x_front / a",
+        "threshold": 0.10,
+        "metric": functools.partial(metrics.dambreak_front, column_width=0.3,
+                                    reference=DATA.format(case="dambreak-1phase",
+                                                          file="dambreak_surge_front_martin_moyce1952_table.csv")),
+        "rungs": [rung(dx, n, q, **{"fluids.0.box.max": "[0.3, 0.6]", "time.end": 0.4, "output.interval": 0.01})
+                  for dx, n, q in ((0.02, 1, True), (0.01, 2, True), (0.005, 2, False))],
+        "plot": "front",
+    },
+    {
+        "id": "dambreak-impact",
+        "case": "dambreak-1phase",
+        "title": "Dam break, first impact at the right-wall sensor P1 (Buchner 2002)",
+        "length": ("H", 0.6),
+        "reference": "Buchner 2002 P1 (experiment, digitised), reference/dambreak_pressure_buchner2002_P1_P2_digitized_trixiparticles.csv",
+        "error": "|t*_SPH - t*_exp| / t*_exp of the first rise of p1 through p* = 0.1",
+        "threshold": 0.02,
+        "metric": functools.partial(metrics.dambreak_impact,
+                                    reference=DATA.format(case="dambreak-1phase",
+                                                          file="dambreak_pressure_buchner2002_P1_P2_digitized_trixiparticles.csv")),
+        "rungs": [rung(dx, n, q, **{"time.end": 0.8, "output.interval": 0}) for dx, n, q in
+                  ((0.024, 1, True), (0.012, 2, True), (0.006, 2, False))],
+        "plot": "impact",
+    },
+    {
+        "id": "dambreak-2phase",
+        "case": "dambreak-2phase",
+        "title": "Two-phase dam break, first impact at P1 (Buchner 2002), consistent and position-only shifting",
+        "length": ("H", 0.6),
+        "reference": "Buchner 2002 P1 (experiment, digitised), reference/dambreak_pressure_buchner2002_P1_P2_digitized_trixiparticles.csv",
+        "error": "|t*_SPH - t*_exp| / t*_exp of the first rise of p1 through p* = 0.1",
+        "threshold": 0.02,
+        "metric": functools.partial(metrics.dambreak_impact,
+                                    reference=DATA.format(case="dambreak-2phase",
+                                                          file="dambreak_pressure_buchner2002_P1_P2_digitized_trixiparticles.csv")),
+        "rungs": [rung(0.048, 2, True, **DB2_COARSE, **{"time.end": 0.8, "output.interval": 0}),
+                  rung(0.024, 2, **{"time.end": 0.8, "output.interval": 0}),
+                  rung(0.012, 2, **{"time.end": 0.8, "output.interval": 0}),
+                  rung(0.048, 2, True, label="delta-plus, position-only shifting", **DB2_COARSE,
+                       **{"time.end": 0.8, "output.interval": 0, "physics.shifting": "position"}),
+                  rung(0.024, 2, label="delta-plus, position-only shifting",
+                       **{"time.end": 0.8, "output.interval": 0, "physics.shifting": "position"})],
+        "plot": "impact",
+    },
+    {
+        "id": "rayleigh-taylor-growth",
+        "case": "rayleigh-taylor",
+        "title": "Rayleigh-Taylor instability, early growth rate (At = 0.5, Re = 256)",
+        "length": ("W", 1.0),
+        "reference": "viscous linear growth rate sqrt(At g k + nu^2 k^4) - nu k^2 (Chandrasekhar 1961)",
+        "error": "|sigma_fit - sigma_nu| / sigma_nu, a(t) = a0 cosh(sigma t) fitted over t <= 0.6 s",
+        "threshold": 0.10,
+        "metric": metrics.rt_growth,
+        "runs": "rayleigh-taylor",
+        "rungs": RT_RUNGS,
+        "plot": "rt_growth",
+    },
+    {
+        "id": "rayleigh-taylor-tips",
+        "case": "rayleigh-taylor",
+        "title": "Rayleigh-Taylor instability, spike and bubble tips (He, Chen and Zhang 1999)",
+        "length": ("W", 1.0),
+        "reference": "He et al. 1999 (lattice Boltzmann, NUMERICAL), reference/rayleigh_taylor_he1999_bubble_spike.csv",
+        "error": "RMS of the tip-position differences / W over t* <= 3",
+        "threshold": 0.05,
+        "metric": functools.partial(metrics.rt_tip_positions,
+                                    reference=DATA.format(case="rayleigh-taylor",
+                                                          file="rayleigh_taylor_he1999_bubble_spike.csv")),
+        "runs": "rayleigh-taylor",
+        "rungs": RT_RUNGS,
+        "plot": "rt_tips",
+    },
+]
+
+SW_RUNGS = [rung(0.05, 1, True), rung(0.025, 2, True), rung(0.0125, 2, True), rung(0.00625, 2),
+            rung(0.05, 2, True, label="delta-plus, water-air (paper 003)", case="standing-wave")]
+STUDIES += [
+    {
+        "id": "standing-wave-period",
+        "case": "standing-wave-1phase",
+        "runs": "standing-wave",
+        "title": "Standing wave, period (paper 003 section 4.2, released from rest; water only, and water-air)",
+        "length": ("L", 2.0),
+        "reference": "linear theory sigma^2 = g k tanh(k d): T = 0.8003 s",
+        "error": "|T_SPH / T - 1|, T_SPH from the spacing of the water's kinetic-energy maxima (notes C2 (a))",
+        "threshold": 0.02,
+        "metric": metrics.standing_wave_period,
+        "rungs": SW_RUNGS,
+        "plot": "standing_wave",
+    },
+    {
+        "id": "standing-wave-decay",
+        "case": "standing-wave-1phase",
+        "runs": "standing-wave",
+        "title": "Standing wave, energy decay (paper 003 section 4.2, released from rest; water only, and water-air)",
+        "length": ("L", 2.0),
+        "reference": "Lamb's viscous decay of the wave energy, 4 nu k^2 = 0.989 1/s at Re = 500",
+        "error": "|gamma_SPH / gamma - 1| of the kinetic-energy maxima's exponential decay (notes C2 (b): 15 %)",
+        "threshold": 0.15,
+        "metric": metrics.standing_wave_decay,
+        "rungs": SW_RUNGS,
+        "plot": "standing_wave",
+    },
+]
+
+STUDIES.append({
+    "id": "two-layer-sloshing",
+    "case": "two-layer-sloshing",
+    "title": "Two-layer sloshing, oil over water (paper 000 section 3.5), interface at WG2",
+    "length": ("h1", 0.05),
+    "reference": "the response period of the forced sloshing, the forcing period 0.830 s (notes section 3.5)",
+    "error": "|T_SPH / T - 1| of the interface elevation at WG2 after t = 1.66 s; threshold 5 % (notes)",
+    "threshold": 0.05,
+    "metric": metrics.sloshing_period,
+    "rungs": [rung(0.01, 1, True), rung(0.005, 2), rung(0.0025, 2)],
+    "plot": "sloshing",
+})
+
+
+def case_path(study, r=None):
+    """The case file of a study, or of one of its rungs."""
+    return os.path.join("cases", (r or {}).get("case") or study["case"], "case.yaml")

@@ -1,0 +1,28 @@
+#!/usr/bin/env bash
+# make validate's machinery on its cheapest rungs: scripts/validate.py runs the coarsest rung of
+# the one-fluid oscillating drop (R/dx = 12.5) and of the standing wave, computes their errors
+# and writes the report. Asserts the report, its CSV and plots exist with a row per study, and
+# the drop's semi-axis within its 2 % threshold of the analytic solution (measured 1.66 % of R).
+set -eu
+cd "$(dirname "$0")/.."
+PYTHON=${PYTHON:-/usr/bin/python3}
+out=$(mktemp -d)
+trap 'rm -rf "$out"' EXIT
+"$PYTHON" scripts/validate.py --coarsest --only oscillating-drop,standing-wave-period \
+  --runs "$out/runs" --report "$out/report"
+for f in README.md results.csv oscillating-drop_comparison.png oscillating-drop_cost.png \
+         standing-wave-period_comparison.png standing-wave-period_cost.png; do
+  [ -s "$out/report/$f" ] || { echo "FAIL: $f missing"; exit 1; }
+done
+grep -q "^## oscillating-drop" "$out/report/README.md"
+grep -q "^## standing-wave-period" "$out/report/README.md"
+"$PYTHON" - "$out/report/results.csv" <<'PY'
+import csv, math, sys
+rows = {r["study"]: r for r in csv.DictReader(open(sys.argv[1]))}
+assert set(rows) == {"oscillating-drop", "standing-wave-period"}, rows
+for r in rows.values():
+    assert math.isfinite(float(r["error"])) and int(r["steps"]) > 0, r
+drop = rows["oscillating-drop"]
+assert drop["verdict"] == "pass" and float(drop["error"]) <= 0.02, drop
+print("drop error %.4f of R, standing-wave period error %.4f" % (float(drop["error"]), float(rows["standing-wave-period"]["error"])))
+PY
