@@ -9,6 +9,15 @@ def _label(r):
     return "%s, dx = %g" % (r["label"], r["dx"])
 
 
+def _runs_and_reference(ax, items, keys, ref_keys, style, ref_style, ref_label):
+    """Each rung's curve c[keys[0]], c[keys[1]] and the reference curve of the last rung."""
+    for r, c in items:
+        ax.plot(c[keys[0]], c[keys[1]], style, ms=3, lw=0.8, label=_label(r))
+    if items:
+        c = items[-1][1]
+        ax.plot(c[ref_keys[0]], c[ref_keys[1]], ref_style, ms=4, lw=0.8, label=ref_label)
+
+
 def hydrostatic(ax, items):
     """Centreline pressure against height, with the exact profile."""
     for r, c in items:
@@ -21,33 +30,21 @@ def hydrostatic(ax, items):
 
 def drop(ax, items):
     """Semi-axis a(t) against the analytic solution."""
-    for r, c in items:
-        ax.plot(c["t"], c["a"], "o-", ms=3, label=_label(r))
-    if items:
-        c = items[-1][1]
-        ax.plot(c["t_ref"], c["a_ref"], "k-", lw=0.8, label="analytic")
+    _runs_and_reference(ax, items, ("t", "a"), ("t_ref", "a_ref"), "o-", "k-", "analytic")
     ax.set_xlabel("t [s]")
     ax.set_ylabel("a [m]")
 
 
 def front(ax, items):
     """Surge front Z = x/a against T = t sqrt(2g/a), with Martin and Moyce's table."""
-    for r, c in items:
-        ax.plot(c["t"], c["z"], "-", label=_label(r))
-    if items:
-        c = items[-1][1]
-        ax.plot(c["t_ref"], c["z_ref"], "ks", ms=4, label="Martin & Moyce 1952")
+    _runs_and_reference(ax, items, ("t", "z"), ("t_ref", "z_ref"), "-", "ks", "Martin & Moyce 1952")
     ax.set_xlabel("T = t sqrt(2g/a)")
     ax.set_ylabel("Z = x_front / a")
 
 
 def impact(ax, items):
     """p* at probe p1 against t*, with Buchner's P1."""
-    for r, c in items:
-        ax.plot(c["t"], c["p"], "-", lw=0.8, label=_label(r))
-    if items:
-        c = items[-1][1]
-        ax.plot(c["t_ref"], c["p_ref"], "k.", ms=4, label="Buchner 2002 P1")
+    _runs_and_reference(ax, items, ("t", "p"), ("t_ref", "p_ref"), "-", "k.", "Buchner 2002 P1")
     ax.set_xlim(1.5, 3.4)
     ax.set_ylim(-0.2, 2.0)
     ax.set_xlabel("t* = t sqrt(g/H)")

@@ -16,6 +16,27 @@ def rung(dx, np_=2, quick=False, label="delta-plus", case=None, **sets):
     return {"dx": dx, "np": np_, "quick": quick, "label": label, "case": case, "sets": sets}
 
 
+def drop_study(case, title, radius, ladder):
+    """An oscillating-drop study of a case (drop radius [m]) on a ladder of (dx, ranks, quick)."""
+    return {"id": case, "case": case, "title": title, "length": ("R", radius),
+            "reference": "incompressible elliptic-drop solution (notes seeds-000-001 section 3.8)",
+            "error": "max |a_SPH - a| / R over one period", "threshold": 0.02,
+            "metric": functools.partial(metrics.drop_semi_axis, radius=radius),
+            "rungs": [rung(dx, n, q, **{"output.interval": 0.1}) for dx, n, q in ladder], "plot": "drop"}
+
+
+def impact_study(study_id, case, title, rungs):
+    """A dam-break study of the first rise of probe p1 against Buchner's P1."""
+    ref = "dambreak_pressure_buchner2002_P1_P2_digitized_trixiparticles.csv"
+    return {"id": study_id, "case": case, "title": title, "length": ("H", 0.6),
+            "reference": "Buchner 2002 P1 (experiment, digitised), reference/" + ref,
+            "error": "|t*_SPH - t*_exp| / t*_exp of the first rise of p1 through p* = 0.1", "threshold": 0.02,
+            "metric": functools.partial(metrics.dambreak_impact, reference=DATA.format(case=case, file=ref)),
+            "rungs": rungs, "plot": "impact"}
+
+
+IMPACT_RUN = {"time.end": 0.8, "output.interval": 0}
+POSITION_ONLY = "delta-plus, position-only shifting"
 HYDRO_DOMAIN = {"domain.min": "[-0.5,-0.5]", "domain.max": "[1.5,2.5]"}   # room for 4 ghost layers at dx = 0.1
 HYDRO_LONG = "delta-plus, t sqrt(g/Hw) = 40"
 DB2_COARSE = {"domain.min": "[-0.3,-0.3]", "domain.max": "[3.516,2.1]"}    # room for 4 ghost layers at dx = 0.048
@@ -39,32 +60,11 @@ STUDIES = [
                   rung(0.04, 2, label=HYDRO_LONG, **{"time.end": 12.77})],
         "plot": "hydrostatic",
     },
-    {
-        "id": "oscillating-drop",
-        "case": "oscillating-drop",
-        "title": "Oscillating drop, one fluid (paper 001 section III.B)",
-        "length": ("R", 1.0),
-        "reference": "incompressible elliptic-drop solution (notes seeds-000-001 section 3.8)",
-        "error": "max |a_SPH - a| / R over one period",
-        "threshold": 0.02,
-        "metric": metrics.drop_semi_axis,
-        "rungs": [rung(0.08, 1, True, **{"output.interval": 0.1}), rung(0.04, 2, True, **{"output.interval": 0.1}),
-                  rung(0.02, 2, **{"output.interval": 0.1})],
-        "plot": "drop",
-    },
-    {
-        "id": "oscillating-drop-2fluid",
-        "case": "oscillating-drop-2fluid",
-        "title": "Oscillating drop in a lighter fluid, density ratio 100 (paper 001 section III.B)",
-        "length": ("R", 0.5),
-        "reference": "incompressible elliptic-drop solution (notes seeds-000-001 section 3.8)",
-        "error": "max |a_SPH - a| / R over one period",
-        "threshold": 0.02,
-        "metric": functools.partial(metrics.drop_semi_axis, radius=0.5),
-        "rungs": [rung(0.04, 2, True, **{"output.interval": 0.1}), rung(0.02, 2, **{"output.interval": 0.1}),
-                  rung(0.01, 2, **{"output.interval": 0.1})],
-        "plot": "drop",
-    },
+    drop_study("oscillating-drop", "Oscillating drop, one fluid (paper 001 section III.B)", 1.0,
+               [(0.08, 1, True), (0.04, 2, True), (0.02, 2, False)]),
+    drop_study("oscillating-drop-2fluid",
+               "Oscillating drop in a lighter fluid, density ratio 100 (paper 001 section III.B)", 0.5,
+               [(0.04, 2, True), (0.02, 2, False), (0.01, 2, False)]),
     {
         "id": "dambreak-front",
         "case": "dambreak-1phase",
@@ -80,41 +80,15 @@ STUDIES = [
                   for dx, n, q in ((0.02, 1, True), (0.01, 2, True), (0.005, 2, False))],
         "plot": "front",
     },
-    {
-        "id": "dambreak-impact",
-        "case": "dambreak-1phase",
-        "title": "Dam break, first impact at the right-wall sensor P1 (Buchner 2002)",
-        "length": ("H", 0.6),
-        "reference": "Buchner 2002 P1 (experiment, digitised), reference/dambreak_pressure_buchner2002_P1_P2_digitized_trixiparticles.csv",
-        "error": "|t*_SPH - t*_exp| / t*_exp of the first rise of p1 through p* = 0.1",
-        "threshold": 0.02,
-        "metric": functools.partial(metrics.dambreak_impact,
-                                    reference=DATA.format(case="dambreak-1phase",
-                                                          file="dambreak_pressure_buchner2002_P1_P2_digitized_trixiparticles.csv")),
-        "rungs": [rung(dx, n, q, **{"time.end": 0.8, "output.interval": 0}) for dx, n, q in
-                  ((0.024, 1, True), (0.012, 2, True), (0.006, 2, False))],
-        "plot": "impact",
-    },
-    {
-        "id": "dambreak-2phase",
-        "case": "dambreak-2phase",
-        "title": "Two-phase dam break, first impact at P1 (Buchner 2002), consistent and position-only shifting",
-        "length": ("H", 0.6),
-        "reference": "Buchner 2002 P1 (experiment, digitised), reference/dambreak_pressure_buchner2002_P1_P2_digitized_trixiparticles.csv",
-        "error": "|t*_SPH - t*_exp| / t*_exp of the first rise of p1 through p* = 0.1",
-        "threshold": 0.02,
-        "metric": functools.partial(metrics.dambreak_impact,
-                                    reference=DATA.format(case="dambreak-2phase",
-                                                          file="dambreak_pressure_buchner2002_P1_P2_digitized_trixiparticles.csv")),
-        "rungs": [rung(0.048, 2, True, **DB2_COARSE, **{"time.end": 0.8, "output.interval": 0}),
-                  rung(0.024, 2, **{"time.end": 0.8, "output.interval": 0}),
-                  rung(0.012, 2, **{"time.end": 0.8, "output.interval": 0}),
-                  rung(0.048, 2, True, label="delta-plus, position-only shifting", **DB2_COARSE,
-                       **{"time.end": 0.8, "output.interval": 0, "physics.shifting": "position"}),
-                  rung(0.024, 2, label="delta-plus, position-only shifting",
-                       **{"time.end": 0.8, "output.interval": 0, "physics.shifting": "position"})],
-        "plot": "impact",
-    },
+    impact_study("dambreak-impact", "dambreak-1phase",
+                 "Dam break, first impact at the right-wall sensor P1 (Buchner 2002)",
+                 [rung(dx, n, q, **IMPACT_RUN) for dx, n, q in ((0.024, 1, True), (0.012, 2, True), (0.006, 2, False))]),
+    impact_study("dambreak-2phase", "dambreak-2phase",
+                 "Two-phase dam break, first impact at P1 (Buchner 2002), consistent and position-only shifting",
+                 [rung(0.048, 2, True, **DB2_COARSE, **IMPACT_RUN), rung(0.024, 2, **IMPACT_RUN),
+                  rung(0.012, 2, **IMPACT_RUN),
+                  rung(0.048, 2, True, label=POSITION_ONLY, **DB2_COARSE, **IMPACT_RUN, **{"physics.shifting": "position"}),
+                  rung(0.024, 2, label=POSITION_ONLY, **IMPACT_RUN, **{"physics.shifting": "position"})]),
     {
         "id": "rayleigh-taylor-growth",
         "case": "rayleigh-taylor",
