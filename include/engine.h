@@ -109,6 +109,8 @@ struct engine {
   double next_output, next_stats, next_probes, next_checkpoint, wall_start, next_progress;
   long last_snapshot_step, last_stats_step, last_probes_step;   /* -1 before the first */
   FILE *stats, *probes;
+  double *probe_buf;               /* the probes' samples of one row, sized at the first row */
+  long probe_buf_len;
   int restarted;                   /* continues from a checkpoint */
 };
 

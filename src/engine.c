@@ -338,4 +338,5 @@ void engine_free(struct engine *e) {
   free(e->case_yaml);
   free(e->snap_times);
   free(e->snap_counts);
+  free(e->probe_buf);
 }

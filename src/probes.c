@@ -220,8 +220,14 @@ void probes_write_row(struct engine *e, FILE *f) {
   const struct case_def *c = e->c;
   int total = 0, n[CASE_MAX_PROBES];
   for (int k = 0; k < c->n_probes; k++) total += n[k] = n_samples(e, &c->probes[k]);
-  double *buf = calloc((size_t)total, sizeof(double));
-  if (!buf) abort();
+  if (total > e->probe_buf_len) {   /* the sample count is fixed by the case: sized once */
+    free(e->probe_buf);
+    e->probe_buf = malloc((size_t)total * sizeof(double));
+    if (!e->probe_buf) abort();
+    e->probe_buf_len = total;
+  }
+  double *buf = e->probe_buf;
+  memset(buf, 0, (size_t)total * sizeof(double));
   for (int k = 0, at = 0; k < c->n_probes; at += n[k++]) {
     if (c->probes[k].kind == PROBE_INTEGRAL) integrate_probe(e, &c->probes[k], buf + at);
     else sample_probe(e, &c->probes[k], n[k], buf + at);
@@ -233,5 +239,4 @@ void probes_write_row(struct engine *e, FILE *f) {
     fprintf(f, "\n");
     fflush(f);
   }
-  free(buf);
 }
