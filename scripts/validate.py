@@ -15,6 +15,7 @@ Usage: scripts/validate.py [--quick] [--only ID[,ID]] [--reuse] [--runs DIR] [--
 MPSPH_LAUNCHER (default "scripts/mpirun -n {np}") starts the ranks, e.g. "srun -n {np}".
 """
 import argparse
+import csv
 import datetime
 import json
 import math
@@ -209,7 +210,8 @@ def write_report(args, results, seconds):
             md.append("| [%s](#%s) | %s, dx = %g | %.4g | %g | %s |" % (
                 study["id"], study["id"], last["rung"]["label"], last["rung"]["dx"], last["err"],
                 study["threshold"], verdict(last["err"], study["threshold"])))
-    csv = ["study,label,dx,np,fluid,wall,steps,wall_seconds,error,threshold,verdict"]
+    table_rows = [["study", "label", "dx", "np", "fluid", "wall", "steps", "wall_seconds", "error", "threshold",
+                   "verdict"]]
     for study, rows in results:
         if not rows:
             continue
@@ -222,15 +224,15 @@ def write_report(args, results, seconds):
         error_time_plot(study, rows, os.path.join(args.report, study["id"] + "_cost.png"))
         for row in rows:
             r, rec = row["rung"], row["rec"]
-            csv.append("%s,%s,%g,%d,%d,%d,%d,%.2f,%.6g,%g,%s" % (
-                study["id"], r["label"], r["dx"], r["np"], rec["fluid"], rec["wall_particles"], rec["steps"],
-                rec["wall"], row["err"], study["threshold"], verdict(row["err"], study["threshold"])))
+            table_rows.append([study["id"], r["label"], "%g" % r["dx"], r["np"], rec["fluid"], rec["wall_particles"],
+                               rec["steps"], "%.2f" % rec["wall"], "%.6g" % row["err"], "%g" % study["threshold"],
+                               verdict(row["err"], study["threshold"])])
     md += ["", "## Commands", "", "Each rung's command line is in `%s/<study>/<rung>/validate.json`; "
            "the full ladder runs with `make validate` (or `scripts/slurm/validate-sweep.sh` on a cluster)." % args.runs]
     with open(os.path.join(args.report, "README.md"), "w") as f:
         f.write("\n".join(md) + "\n")
-    with open(os.path.join(args.report, "results.csv"), "w") as f:
-        f.write("\n".join(csv) + "\n")
+    with open(os.path.join(args.report, "results.csv"), "w", newline="") as f:
+        csv.writer(f, lineterminator="\n").writerows(table_rows)
 
 
 def main():
