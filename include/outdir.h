@@ -3,6 +3,7 @@
 #define MPSPH_OUTDIR_H
 
 #include <stddef.h>
+#include <stdio.h>
 
 /** Create the folder path and its missing parents (mkdir -p). Returns 0, or -1 with errno set. */
 int outdir_create(const char *path);
@@ -11,5 +12,11 @@ int outdir_create(const char *path);
  *  probe file, then remove the folders this call created, so that nothing is left behind.
  *  Returns 0, or 1 with "cannot write to the output folder '<path>': <reason>" in err. */
 int outdir_probe(const char *path, char *err, size_t err_len);
+
+/** Write dir/name through the temporary file dir/name.tmp, renamed when complete, so that a crash
+ *  never leaves a half-written file in its place: fill(f, ctx) writes the content. Returns 0, or
+ *  -1 (the previous file, if any, is left as it was). */
+int outdir_write_file(const char *dir, const char *name, void (*fill)(FILE *f, const void *ctx),
+                      const void *ctx);
 
 #endif

@@ -15,17 +15,8 @@
 #include "passes.h"
 #include "probes.h"
 
-/* Write text to dir/name through a temporary file. Returns 0 or -1. */
-static int write_text_file(const char *dir, const char *name, const char *text) {
-  char path[1200], tmp[1300];
-  snprintf(path, sizeof(path), "%s/%s", dir, name);
-  snprintf(tmp, sizeof(tmp), "%s.tmp", path);
-  FILE *f = fopen(tmp, "w");
-  if (!f) return -1;
-  int ok = fputs(text, f) >= 0;
-  ok &= fclose(f) == 0;
-  return ok ? rename(tmp, path) : -1;
-}
+/* Write the text ctx to f (an outdir_write_file filler). */
+static void put_text(FILE *f, const void *text) { fputs(text, f); }
 
 /* Drop the rows of the CSV file at path whose step (first column) is above last_step, keeping
  * the header, through a temporary file. Returns 0 or -1. */
@@ -84,7 +75,7 @@ int engine_open_output(struct engine *e) {
   e->case_yaml = case_to_yaml(e->c);
   int status = 0;
   if (e->rank == 0) {
-    if (outdir_create(e->outdir) || write_text_file(e->outdir, "config.yaml", e->case_yaml)) {
+    if (outdir_create(e->outdir) || outdir_write_file(e->outdir, "config.yaml", put_text, e->case_yaml)) {
       fprintf(stderr, "mpsph: cannot write to the output folder '%s': %s\n", e->outdir, strerror(errno));
       status = 1;
     } else {

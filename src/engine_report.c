@@ -1,10 +1,10 @@
 /* engine_report.c — the end-of-run summary: throughput, time per operation, memory; printed, and
  * written to OUTDIR/timings.csv for the benchmark driver (scripts/bench.py). */
 #include <stdlib.h>
-#include <string.h>
 #include <sys/resource.h>
 #include <unistd.h>
 #include "engine.h"
+#include "outdir.h"
 
 /* Peak resident memory of this process [bytes]. */
 static double peak_rss_bytes(void) {
@@ -38,6 +38,7 @@ static double max_over_ranks(const struct engine *e, double x) {
 
 /* Everything the summary reports, reduced over the ranks (memory gathered to rank 0). */
 struct run_summary {
+  const struct engine *e;
   long steps;
   double loop_seconds, n_fluid, n_wall;
   double op_max[ENGINE_MAX_OPS], op_mean[ENGINE_MAX_OPS], op_pairs[ENGINE_MAX_OPS];
@@ -54,6 +55,7 @@ static void max_mean(const struct engine *e, double x, double *max, double *mean
 
 static void summarise(struct engine *e, long steps, double loop_seconds, struct run_summary *s) {
   double rss[2] = {peak_rss_bytes(), current_rss_bytes()}, *all = NULL;
+  s->e = e;
   s->steps = steps;
   s->loop_seconds = loop_seconds;
   engine_global_counts(e, &s->n_fluid, &s->n_wall);
@@ -72,8 +74,11 @@ static void summarise(struct engine *e, long steps, double loop_seconds, struct 
   s->rss_peak = all;
 }
 
-/* Rank 0: the summary as CSV rows name,kind,value,seconds_max,seconds_mean,pairs. */
-static void write_rows(const struct engine *e, const struct run_summary *s, FILE *f) {
+/* Rank 0: the summary ctx (a struct run_summary) as CSV rows name,kind,value,seconds_max,
+ * seconds_mean,pairs (an outdir_write_file filler). */
+static void write_rows(FILE *f, const void *ctx) {
+  const struct run_summary *s = ctx;
+  const struct engine *e = s->e;
   fprintf(f, "name,kind,value,seconds_max,seconds_mean,pairs\n");
   fprintf(f, "ranks,run,%d,,,\nsteps,run,%ld,,,\n", e->n_ranks, s->steps);
   fprintf(f, "fluid_particles,run,%.0f,,,\nwall_particles,run,%.0f,,,\n", s->n_fluid, s->n_wall);
@@ -93,17 +98,8 @@ static void write_rows(const struct engine *e, const struct run_summary *s, FILE
 
 /* Rank 0: write OUTDIR/timings.csv through a temporary name; a failure is only reported. */
 static void write_timings(const struct engine *e, const struct run_summary *s) {
-  if (!e->outdir) return;
-  size_t len = strlen(e->outdir) + 32;
-  char *path = malloc(len), *tmp = malloc(len);
-  snprintf(path, len, "%s/timings.csv", e->outdir);
-  snprintf(tmp, len, "%s/timings.csv.tmp", e->outdir);
-  FILE *f = fopen(tmp, "w");
-  if (f) write_rows(e, s, f);
-  if (!f || fclose(f) || rename(tmp, path))
-    fprintf(stderr, "mpsph: warning: cannot write %s\n", path);
-  free(path);
-  free(tmp);
+  if (e->outdir && outdir_write_file(e->outdir, "timings.csv", write_rows, s))
+    fprintf(stderr, "mpsph: warning: cannot write %s/timings.csv\n", e->outdir);
 }
 
 static void print_summary(const struct engine *e, const struct run_summary *s) {

@@ -71,3 +71,16 @@ int outdir_probe(const char *path, char *err, size_t err_len) {
   remove_dirs(path, created);
   return status;
 }
+
+int outdir_write_file(const char *dir, const char *name, void (*fill)(FILE *f, const void *ctx),
+                      const void *ctx) {
+  char path[PATH_MAX], tmp[PATH_MAX + 8];
+  snprintf(path, sizeof(path), "%s/%s", dir, name);
+  snprintf(tmp, sizeof(tmp), "%s.tmp", path);
+  FILE *f = fopen(tmp, "w");
+  if (!f) return -1;
+  fill(f, ctx);
+  int ok = !ferror(f);
+  ok &= fclose(f) == 0;
+  return ok ? rename(tmp, path) : -1;
+}
