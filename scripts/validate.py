@@ -32,10 +32,10 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
+from bench import read_timings  # noqa: E402
 from validation import plots  # noqa: E402
 from validation.studies import STUDIES, case_path  # noqa: E402
 
-SUMMARY = re.compile(r"summary: (\d+) steps in ([\d.]+) s on (\d+) ranks; (\d+) fluid \+ (\d+) wall")
 
 
 def rung_dir(runs, study, r):
@@ -62,16 +62,19 @@ def run_rung(study, r, out, reuse, done=set()):
         with open(record_path) as f:
             return json.load(f)
     os.makedirs(out, exist_ok=True)
+    timings = os.path.join(out, "timings.csv")
+    if os.path.exists(timings):
+        os.remove(timings)   # a run that stops before its summary must not show an older one's
     cmd = command(study, r, out)
     start = time.time()
     with open(os.path.join(out, "mpsph.log"), "w") as log:
         status = subprocess.call(cmd, stdout=log, stderr=subprocess.STDOUT)
     wall = time.time() - start
     rec = {"status": status, "wall": wall, "command": " ".join(cmd), "steps": 0, "fluid": 0, "wall_particles": 0}
-    with open(os.path.join(out, "mpsph.log")) as log:
-        m = SUMMARY.search(log.read())
-    if m:
-        rec.update(steps=int(m.group(1)), fluid=int(m.group(4)), wall_particles=int(m.group(5)))
+    if os.path.exists(timings):   # the run's summary (engine_report.c), also after status 2
+        value = {row["name"]: row["value"] for row in read_timings(timings)}
+        rec.update(steps=int(value["steps"]), fluid=int(value["fluid_particles"]),
+                   wall_particles=int(value["wall_particles"]))
     with open(record_path, "w") as f:
         json.dump(rec, f)
     done.add(out)
