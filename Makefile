@@ -70,7 +70,7 @@ build/mpsph: build/obj/main.o build/libmpsph.a
 	@echo "LD $@"
 	@$(MPICC) $(CFLAGS) $^ -o $@ $(LDLIBS)
 
-build/tests/%: tests/%.c tests/check.h build/libmpsph.a | build/tests
+build/tests/%: tests/%.c tests/check.h tests/engine_test.h build/libmpsph.a | build/tests
 	@echo "LD $@"
 	@$(MPICC) $(CFLAGS) -Itests $< build/libmpsph.a -o $@ $(LDLIBS)
 
@@ -118,7 +118,7 @@ build/bench:
 build/bench/mpsph-single-phase: $(SRC) $(wildcard include/*.h) | build/bench
 	@echo "LD $@ (SINGLE_PHASE)"
 	@$(MPICC) $(filter-out -DMPSPH_SINGLE_PHASE,$(CFLAGS)) -DMPSPH_SINGLE_PHASE $(SRC) -o $@ $(LDLIBS)
-build/tests/test_no_alloc: tests/test_no_alloc.c tests/check.h build/libmpsph.a | build/tests
+build/tests/test_no_alloc: tests/test_no_alloc.c tests/check.h tests/engine_test.h build/libmpsph.a | build/tests
 	@echo "LD $@"
 	@$(MPICC) $(CFLAGS) -Itests $< build/libmpsph.a -o $@ $(LDLIBS) \
 	  -Wl,--wrap=malloc,--wrap=calloc,--wrap=realloc

@@ -11,6 +11,7 @@
 #include <unistd.h>
 #include "case_load.h"
 #include "check.h"
+#include "engine_test.h"
 #include "engine.h"
 
 #define STEPS 12
@@ -44,8 +45,7 @@ int main(int argc, char **argv) {
   int rank;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   char dir[64] = "/tmp/mpsph-test-no-alloc-XXXXXX", err[512];
-  if (rank == 0 && !mkdtemp(dir)) return 1;
-  MPI_Bcast(dir, sizeof dir, MPI_CHAR, 0, MPI_COMM_WORLD);
+  if (engine_test_scratch(dir, sizeof dir)) return 1;
   static struct case_def c;
   struct engine e;
   int n_sets = (int)(sizeof SETS / sizeof SETS[0]);
@@ -63,17 +63,5 @@ int main(int argc, char **argv) {
   MPI_Allreduce(&n_allocs, &total, 1, MPI_LONG, MPI_SUM, MPI_COMM_WORLD);
   if (rank == 0) printf("allocations in steps 2..%d: %ld (all ranks)\n", STEPS, total);
   CHECK(total == 0, "%ld allocations inside steps 2..%d", total, STEPS);
-  engine_close_output(&e);
-  engine_free(&e);
-  MPI_Barrier(MPI_COMM_WORLD);
-  if (rank == 0) {
-    char cmd[128];
-    snprintf(cmd, sizeof cmd, "rm -rf '%s'", dir);
-    if (system(cmd)) printf("could not remove %s\n", dir);
-  }
-  int failed = check_failures, any;
-  MPI_Allreduce(&failed, &any, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
-  int status = rank == 0 ? check_report("test_no_alloc") : 0;
-  MPI_Finalize();
-  return any ? 1 : status;
+  return engine_test_finish(&e, dir, "test_no_alloc");
 }

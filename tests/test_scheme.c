@@ -13,6 +13,7 @@
 #include <unistd.h>
 #include "case_load.h"
 #include "check.h"
+#include "engine_test.h"
 #include "engine.h"
 #include "eos.h"
 
@@ -111,8 +112,7 @@ int main(int argc, char **argv) {
   int rank;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   char dir[256] = "/tmp/mpsph-test-scheme-XXXXXX", path[300], out[300], err[512];
-  if (rank == 0 && !mkdtemp(dir)) return 1;
-  MPI_Bcast(dir, sizeof dir, MPI_CHAR, 0, MPI_COMM_WORLD);
+  if (engine_test_scratch(dir, sizeof dir)) return 1;
   snprintf(path, sizeof path, "%s/case.yaml", dir);
   snprintf(out, sizeof out, "%s/out", dir);
   if (rank == 0) {
@@ -133,17 +133,5 @@ int main(int argc, char **argv) {
     if (!noisy) check_gradient(&e);
     else check_momentum(&e);
   }
-  engine_close_output(&e);
-  engine_free(&e);
-  MPI_Barrier(MPI_COMM_WORLD);
-  if (rank == 0) {
-    char cmd[400];
-    snprintf(cmd, sizeof cmd, "rm -rf '%s'", dir);
-    if (system(cmd)) printf("could not remove %s\n", dir);
-  }
-  int failed = check_failures, any;
-  MPI_Allreduce(&failed, &any, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
-  int status = rank == 0 ? check_report("test_scheme") : (any ? 1 : 0);
-  MPI_Finalize();
-  return any ? 1 : status;
+  return engine_test_finish(&e, dir, "test_scheme");
 }
