@@ -23,23 +23,8 @@ import sys
 import h5py
 import numpy as np
 
-
-def analytic(t_end, omega=1.0, radius=1.0, n=20000):
-    """RK4 integration of the (a, A) system; returns t, a, p-factor K."""
-    def rhs(y):
-        a, amp = y
-        b = radius ** 2 / a
-        return np.array([amp * a, (amp ** 2 + omega ** 2) * (b ** 2 - a ** 2) / (a ** 2 + b ** 2)])
-    t = np.linspace(0, t_end, n)
-    y = np.empty((n, 2))
-    y[0] = (radius, omega)
-    for k in range(n - 1):
-        h = t[k + 1] - t[k]
-        k1 = rhs(y[k]); k2 = rhs(y[k] + h / 2 * k1); k3 = rhs(y[k] + h / 2 * k2); k4 = rhs(y[k] + h * k3)
-        y[k + 1] = y[k] + h / 6 * (k1 + 2 * k2 + 2 * k3 + k4)
-    dadt = np.array([rhs(v)[1] for v in y])
-    k_factor = (dadt + y[:, 1] ** 2 + omega ** 2) * y[:, 0] ** 2
-    return t, y[:, 0], k_factor
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "scripts"))
+from validation.metrics import drop_analytic  # noqa: E402  (the analytic solution, one copy)
 
 
 def inner_sound_speed(run):
@@ -62,7 +47,7 @@ def semi_axis(path):
 def main(run, tol_a=0.02, tol_p=0.05):
     snaps = sorted(glob.glob(os.path.join(run, "snap_*.h5")))
     ts, a_sph = np.array([semi_axis(s) for s in snaps]).T
-    t, a, k_factor = analytic(ts[-1] * 1.001 + 1e-9)
+    t, a, k_factor = drop_analytic(ts[-1] * 1.001 + 1e-9)
     err_a = np.max(np.abs(a_sph - np.interp(ts, t, a)))
     with h5py.File(snaps[0], "r") as f:
         phases = sorted(set(f["particles/phase"][:]) - {-1})

@@ -17,6 +17,12 @@ def snapshots(run):
     return sorted(glob.glob(os.path.join(run, "snap_*.h5")))
 
 
+def snapshot_time(path):
+    """The time [s] of a snapshot (its header only)."""
+    with h5py.File(path, "r") as f:
+        return float(f["header"].attrs["time"])
+
+
 def read_snapshot(path):
     """Time [s] and the fluid particles (phase >= 0) of a snapshot: dict of arrays."""
     with h5py.File(path, "r") as f:
@@ -69,22 +75,24 @@ def hydrostatic_centreline(run, dx):
 
 def drop_analytic(t_end, omega=1.0, radius=1.0, n=20000):
     """RK4 of the incompressible elliptic drop: da/dt = A a, dA/dt = (A^2 + w^2)(b^2 - a^2)/(a^2 + b^2),
-    b = R^2/a, a(0) = R, A(0) = w (notes section 3.8). Returns t and a(t)."""
+    b = R^2/a, a(0) = R, A(0) = w (notes section 3.8), in n steps to t_end. Returns t, a(t) and the
+    centre-pressure factor K = (dA/dt + A^2 + w^2) a^2 (p_c = K (rho_in + 3 rho_out)/8 for two
+    fluids, rho K/2 for one)."""
     def rhs(q):
         a, amp = q
         b = radius * radius / a
         return np.array([amp * a, (amp * amp + omega * omega) * (b * b - a * a) / (a * a + b * b)])
     dt = t_end / n
-    q = np.array([radius, omega])
-    out = [q[0]]
-    for _ in range(n):
-        k1 = rhs(q)
-        k2 = rhs(q + 0.5 * dt * k1)
-        k3 = rhs(q + 0.5 * dt * k2)
-        k4 = rhs(q + dt * k3)
-        q = q + dt / 6 * (k1 + 2 * k2 + 2 * k3 + k4)
-        out.append(q[0])
-    return np.linspace(0, t_end, n + 1), np.array(out)
+    q = np.empty((n + 1, 2))
+    q[0] = (radius, omega)
+    for k in range(n):
+        k1 = rhs(q[k])
+        k2 = rhs(q[k] + 0.5 * dt * k1)
+        k3 = rhs(q[k] + 0.5 * dt * k2)
+        k4 = rhs(q[k] + dt * k3)
+        q[k + 1] = q[k] + dt / 6 * (k1 + 2 * k2 + 2 * k3 + k4)
+    dadt = np.array([rhs(v)[1] for v in q])
+    return np.linspace(0, t_end, n + 1), q[:, 0], (dadt + q[:, 1] ** 2 + omega ** 2) * q[:, 0] ** 2
 
 
 def drop_semi_axis(run, dx, radius=1.0):
@@ -98,7 +106,7 @@ def drop_semi_axis(run, dx, radius=1.0):
         xc = s["position"][inner, 0] - np.sum(vol * s["position"][inner, 0]) / vol.sum()
         ts.append(t)
         a_sph.append(2 * math.sqrt(np.sum(vol * xc * xc) / vol.sum()))
-    t_ref, a_ref = drop_analytic(max(ts), radius=radius)
+    t_ref, a_ref, _ = drop_analytic(max(ts), radius=radius)
     err = np.max(np.abs(np.array(a_sph) - np.interp(ts, t_ref, a_ref))) / radius
     return err, "%d snapshots to t = %.3g s" % (len(ts), max(ts)), {"t": np.array(ts), "a": np.array(a_sph),
                                                                     "t_ref": t_ref, "a_ref": a_ref}
@@ -294,7 +302,7 @@ def standing_wave_series(run):
 def velocity_l2_at(run, t_target):
     """sqrt(sum |u|^2 / N_w) of the water in the snapshot nearest t_target (003 Eq. 51) [m/s], and
     the snapshot's time."""
-    best = min(snapshots(run), key=lambda p: abs(read_snapshot(p)[0] - t_target))
+    best = min(snapshots(run), key=lambda p: abs(snapshot_time(p) - t_target))
     t, s = read_snapshot(best)
     v = s["velocity"][s["phase"] == 0]
     return math.sqrt(np.sum(v * v) / len(v)), t
