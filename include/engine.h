@@ -181,6 +181,11 @@ void engine_work_reserve(struct engine *e);
 /** Evaluate the stage pipeline at the current state (skip_state_halo: the halo is fresh). */
 void engine_evaluate(struct engine *e, int skip_state_halo);
 
+/** Wall ghost values (pressure, velocity, density, mass) from the current fluid state, outside
+ *  the timed stage pipeline: for the outputs at the start of a run, before any stage has set
+ *  them. Collective. */
+void engine_ghosts_now(struct engine *e);
+
 /** Assemble the pipeline of passes and halo updates the case needs; allocate its arrays. On a
  *  re-assembly the operations that stay keep their accumulated time and pairs. */
 void engine_assemble(struct engine *e);

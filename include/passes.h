@@ -28,10 +28,9 @@ void pass_neighbour_lists(struct engine *e);
  *  after the halo updates of the state and the wall ghost values. */
 void pass_volumes(struct engine *e);
 
-/** Shepard sums at one point: sum W V, and sum W V times p, rho, u; weights per phase. */
+/** Shepard sums at one point, per fluid phase: sum W V, and sum W V times p, rho, u. */
 struct shepard {
-  double w, wp, wrho, wu[3];
-  double w_phase[CASE_MAX_PHASES];
+  double w[CASE_MAX_PHASES], wp[CASE_MAX_PHASES], wrho[CASE_MAX_PHASES], wu[CASE_MAX_PHASES][3];
 };
 
 /** Called for each slot j within the kernel support of a point, with wv = W V_j [-]. */
@@ -41,17 +40,17 @@ typedef void (*near_fn)(void *ctx, const struct engine *e, long j, double wv);
  *  xs, over the cells around xs's cell in global cell order; returns the number of calls. */
 long visit_near(const struct engine *e, const double *xs, int with_walls, near_fn fn, void *ctx);
 
-/** Shepard sums at xs over the fluid particles (and the wall ghosts if with_walls) of the cells
- *  around xs's cell; counts the pairs into *pairs. */
-void shepard_at(const struct engine *e, const double *xs, int with_walls, struct shepard *s,
-                long *pairs);
+/** Shepard sums per phase at xs over the fluid particles of the cells around xs's cell; counts
+ *  the pairs into *pairs. */
+void shepard_at(const struct engine *e, const double *xs, struct shepard *s, long *pairs);
 
 /** The mirror point of wall ghost k now [m]: its position plus its body-frame offset (the
  *  mirror array), turned with the wall. */
 void wall_mirror_point(const struct engine *e, long k, double *xs);
 
-/** Wall ghosts: Shepard interpolation of p, u at the mirror point, hydrostatic pressure
- *  correction and free-/no-slip velocity (Marrone et al. 2011). Owned ghosts only. */
+/** Wall ghosts: Shepard interpolation of p, u, rho at the mirror point over the phase with the
+ *  largest Shepard weight there, hydrostatic pressure correction with that phase's density and
+ *  free-/no-slip velocity (Marrone et al. 2011). Owned ghosts only. */
 void pass_wall_ghosts(struct engine *e);
 
 /** Per stage: particle volumes; renormalised density gradient over same-phase neighbours

@@ -31,6 +31,7 @@ static const char *const PRESSURE_NAMES[] = {"hydrostatic", "zero", NULL};
 static const char *const BOOL_NAMES[] = {"false", "true", NULL};
 static const char *const FREE_SURFACE_NAMES[] = {"auto", "on", "off", NULL};
 static const char *const DAMPER_NAMES[] = {"difference", "symmetric", NULL};
+static const char *const IFACE_P_NAMES[] = {"sum", "density-weighted", NULL};
 static const char *const RAMP_NAMES[] = {"none", "linear", "smooth", NULL};
 
 /* The keys allowed in each mapping. */
@@ -57,7 +58,8 @@ static const char *const RAMP_KEYS[] = {"shape", "time", NULL};
 static const char *const PHYSICS_KEYS[] = {"delta", "artificial_viscosity", "acoustic_damper",
                                            "shifting", "u_max", "tensile_control", "free_surface",
                                            "surface_band", "interface_mode", "damper_form",
-                                           "interface_sharpness", "limit_surface_shifting", NULL};
+                                           "interface_sharpness", "limit_surface_shifting",
+                                           "interface_pressure", NULL};
 static const char *const INITIAL_KEYS[] = {"pressure", NULL};
 static const char *const PROBE_KEYS[] = {"name", "kind", "position", "diameter", "axis",
                                          "interpolation", "phase", NULL};
@@ -589,6 +591,19 @@ static int read_table_motion(const struct map *m, struct wall_motion *w) {
   return read_table(m, w) || vec(m, "centre", 0, w->centre);
 }
 
+/* The case's geometry is the wall at t = 0: a motion must start there (zero displacement and
+ * angle at t = 0; a sinusoid without a ramp and with sin(phase) != 0 does not). */
+static int check_motion_start(const struct map *m, const struct wall_motion *w) {
+  struct frame f;
+  motion_frame(w, 0.0, &f);
+  double d0 = sqrt(f.d[0] * f.d[0] + f.d[1] * f.d[1] + f.d[2] * f.d[2]);
+  if (d0 <= 1e-12 && fabs(f.theta) <= 1e-12) return 0;
+  return fail(m->ld, m->node, m->path, "starts displaced (|d(0)| = %g m, theta(0) = %g rad), "
+              "expected zero displacement and angle at t = 0: the walls of the case are their "
+              "place at t = 0 (use a ramp, a phase of 0 or pi, or a table whose first row is zero)",
+              d0, f.theta);
+}
+
 /* The prescribed motion of a wall (absent: the wall is fixed). */
 static int read_motion(const struct map *wall, struct wall *w) {
   struct map m, translation, rotation;
@@ -596,14 +611,15 @@ static int read_motion(const struct map *wall, struct wall *w) {
   if (sub(wall, "motion", MOTION_KEYS, &m)) return 1;
   w->moving = m.node != NULL;
   if (!w->moving) return 0;
-  if (ytree_get(m.node, "table")) return read_table_motion(&m, &w->motion);
+  if (ytree_get(m.node, "table")) return read_table_motion(&m, &w->motion) || check_motion_start(&m, &w->motion);
   const struct ynode *centre = get(&m, "centre", path);
   if (centre)
     return fail(m.ld, centre, path, "got a centre without a table, expected rotation.centre for a "
                 "rotation law (motion.centre is the table's rotation centre)");
   return read_law(&m, "translation", TRANSLATION_KEYS, 1, &w->motion.translation, &translation) ||
          read_law(&m, "rotation", ROTATION_KEYS, 0, &w->motion.rotation, &rotation) ||
-         (w->motion.rotation.active && vec(&rotation, "centre", 1, w->motion.centre));
+         (w->motion.rotation.active && vec(&rotation, "centre", 1, w->motion.centre)) ||
+         check_motion_start(&m, &w->motion);
 }
 
 static int read_wall(const struct map *m, struct case_def *c, int i) {
@@ -770,7 +786,7 @@ static double default_u_max(const struct case_def *c) {
 
 static int read_physics(const struct map *root, struct case_def *c) {
   struct map ph;
-  int shifting, tic, fs, form, limit;
+  int shifting, tic, fs, form, limit, iface_p;
   double mode;
   if (sub(root, "physics", PHYSICS_KEYS, &ph) ||
       num(&ph, "delta", &R_NONNEGATIVE, 0.1, &c->delta) ||
@@ -784,7 +800,8 @@ static int read_physics(const struct map *root, struct case_def *c) {
       num(&ph, "interface_mode", &R_MODE, 4, &mode) ||
       choice(&ph, "damper_form", DAMPER_NAMES, DAMPER_SYMMETRIC, &form) ||
       num(&ph, "interface_sharpness", &R_NONNEGATIVE, 0, &c->interface_sharpness) ||
-      choice(&ph, "limit_surface_shifting", BOOL_NAMES, 0, &limit))
+      choice(&ph, "limit_surface_shifting", BOOL_NAMES, 0, &limit) ||
+      choice(&ph, "interface_pressure", IFACE_P_NAMES, IFACE_P_SUM, &iface_p))
     return 1;
   c->shifting = (enum shifting_kind)shifting;
   c->tensile_control = tic;
@@ -792,6 +809,7 @@ static int read_physics(const struct map *root, struct case_def *c) {
   c->interface_mode = (int)mode;
   c->damper_form = (enum damper_form)form;
   c->limit_surface_shifting = limit;
+  c->interface_pressure = (enum interface_pressure)iface_p;
   return 0;
 }
 
@@ -1137,6 +1155,7 @@ static void put_tail(FILE *f, const struct case_def *c) {
   put_word(f, "  ", "damper_form", DAMPER_NAMES[c->damper_form]);
   put_num(f, "  ", "interface_sharpness", c->interface_sharpness);
   put_word(f, "  ", "limit_surface_shifting", BOOL_NAMES[c->limit_surface_shifting != 0]);
+  put_word(f, "  ", "interface_pressure", IFACE_P_NAMES[c->interface_pressure]);
   fputs("initial:\n", f);
   put_word(f, "  ", "pressure", PRESSURE_NAMES[c->initial_pressure]);
   put_list_key(f, "probes", c->n_probes);

@@ -292,6 +292,7 @@ static double process_cpu_seconds(void) {
 }
 
 int engine_run(struct engine *e) {
+  if (!e->restarted) engine_ghosts_now(e);   /* wall sensors and ghost pressures at t = 0 */
   int status = e->restarted ? 0 : engine_output(e, 1), signo = 0;
   long first_step = e->step;
   double loop_start = MPI_Wtime(), cpu_start = process_cpu_seconds();

@@ -175,6 +175,15 @@ void engine_evaluate(struct engine *e, int skip_state_halo) {
   }
 }
 
+void engine_ghosts_now(struct engine *e) {
+  if (!(e->features & FEAT_WALLS)) return;
+  double *fields[32];
+  halo_update(&e->halo, &e->p, fields, halo_field_list(e, HF_POS | HF_VEL | HF_RHO | HF_P, fields));
+  pass_wall_ghosts(e);
+  halo_update(&e->halo, &e->p, fields, halo_field_list(e, HF_VEL | HF_RHO | HF_P | HF_MASS, fields));
+  e->pass_pairs = 0;
+}
+
 double engine_shift_max(const struct engine *e) { return 0.5 * (ENGINE_CELL_SKIN - 1.0) * e->kern.support; }
 
 /* |u_w|^2 of moving-wall ghost i at the current stage [m^2/s^2]. */

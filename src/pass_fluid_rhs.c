@@ -29,6 +29,13 @@ struct fluid_sums {
   double diff, drho_du, grad_p[3], visc[3], mom_du[3], damper[3], sharp[3];
 };
 
+/* The pressure of other-phase neighbour j as particle i sees it with the density-weighted
+ * interface pressure p_ij = (rho_j p_i + rho_i p_j)/(rho_i + rho_j) (Hu & Adams 2006): the pair
+ * term p_j' + p_i equals 2 p_ij, so p_j' = 2 p_ij - p_i [Pa]. */
+static inline double other_phase_pressure(double pi, double rhoi, double pj, double rhoj) {
+  return ((rhoj - rhoi) * pi + 2.0 * rhoi * pj) / (rhoi + rhoj);
+}
+
 /* Loop over the neighbours of i; terms DU (delta-u), DAMP (acoustic damper: 1 symmetric,
  * 2 difference form), PHASES (0: one fluid phase, so no pair is of the other-phase relation;
  * 1: several phases; 2: several phases with the sharpness force) and the dimension are
@@ -51,6 +58,8 @@ static inline __attribute__((always_inline)) void fluid_sums(const struct engine
   const int ph = ci->phase;
   const double pi = pres[i], rhoi = rho[i], eta2 = 0.01 * e->h * e->h, support2 = e->kern.support2;
   const double p_sign = ci->p_sign;
+  const int weighted = PHASES && e->c->interface_pressure == IFACE_P_DENSITY_WEIGHTED;
+  const double rho0i = e->c->phases[ph].rho0;
   double xi[3], vi[3], dui[3] = {0, 0, 0}, gri[3];
   for (int d = 0; d < dim; d++) {
     xi[d] = x[d][i];
@@ -73,7 +82,11 @@ static inline __attribute__((always_inline)) void fluid_sums(const struct engine
     n_pairs++;
     const double fv = kernel_f(&e->kern, r2) * vol[j];
     const int rel = phase[j] == PHASE_WALL ? PAIR_WALL : (!PHASES || phase[j] == ph) ? PAIR_SAME : PAIR_OTHER;
-    double psum = pres[j] + p_sign * pi;
+    /* other phase: a fluid particle of another phase, or a ghost standing for one (rho0 of
+     * another phase) */
+    const int other = PHASES && (rel == PAIR_OTHER || (rel == PAIR_WALL && rho[j] != rho0i));
+    double pj = weighted && other ? other_phase_pressure(pi, rhoi, pres[j], rho[j]) : pres[j];
+    double psum = pj + p_sign * pi;
     for (int d = 0; d < dim; d++) s.grad_p[d] += psum * fv * dx[d];
     if (DU) {
       const struct interface_weights *iw = &e->iface[rel];

@@ -1,6 +1,7 @@
 /* pass_wall_ghosts.c — values of the ghost particles (Marrone et al. 2011, CMAME 200), fixed in
  * their wall's frame: Shepard interpolation of pressure and velocity at the ghost's mirror point
- * r*, p_k = p* + rho* (g - a_w).(r_k - r*), u_k = u* with its normal component relative to the
+ * r* over the phase with the largest Shepard weight there (a ghost beside air behaves as air),
+ * p_k = p* + rho* (g - a_w).(r_k - r*), u_k = u* with its normal component relative to the
  * wall mirrored (free slip) or 2 u_w - u* (no slip); u_w, a_w = 0 for a fixed wall. */
 #include <math.h>
 #include <string.h>
@@ -24,27 +25,26 @@ long visit_near(const struct engine *e, const double *xs, int with_walls, near_f
   return n;
 }
 
-/* Add slot j with weight wv to the Shepard sums ctx. */
+/* Add fluid slot j with weight wv to the Shepard sums ctx of its phase. */
 static void add_shepard(void *ctx, const struct engine *e, long j, double wv) {
   const struct parts *p = &e->p;
   struct shepard *s = ctx;
-  s->w += wv;
-  s->wp += wv * p->p[j];
-  s->wrho += wv * p->rho[j];
-  for (int d = 0; d < p->dim; d++) s->wu[d] += wv * p->v[d][j];
-  if (p->phase[j] != PHASE_WALL) s->w_phase[p->phase[j]] += wv;
+  int ph = p->phase[j];
+  s->w[ph] += wv;
+  s->wp[ph] += wv * p->p[j];
+  s->wrho[ph] += wv * p->rho[j];
+  for (int d = 0; d < p->dim; d++) s->wu[ph][d] += wv * p->v[d][j];
 }
 
-void shepard_at(const struct engine *e, const double *xs, int with_walls, struct shepard *s,
-                long *pairs) {
+void shepard_at(const struct engine *e, const double *xs, struct shepard *s, long *pairs) {
   memset(s, 0, sizeof(*s));
-  *pairs += visit_near(e, xs, with_walls, add_shepard, s);
+  *pairs += visit_near(e, xs, 0, add_shepard, s);
 }
 
 static int majority_phase(const struct engine *e, const struct shepard *s) {
   int best = 0;
   for (int ph = 1; ph < e->c->n_phases; ph++)
-    if (s->w_phase[ph] > s->w_phase[best]) best = ph;
+    if (s->w[ph] > s->w[best]) best = ph;
   return best;
 }
 
@@ -65,11 +65,12 @@ static void ghost_from_shepard(struct engine *e, long k, const double *xs, const
   double u[3] = {0, 0, 0}, n[3], nn = 0, un = 0, pressure = 0, mid[3] = {0, 0, 0}, uw[3], aw[3];
   for (int d = 0; d < dim; d++) mid[d] = 0.5 * (xs[d] + p->x[d][k]);
   wall_kinematics(e, w, mid, uw, aw);
-  if (s->w > 0) {
-    double rho_star = s->wrho / s->w;
-    pressure = s->wp / s->w;
+  int ph = majority_phase(e, s);
+  if (s->w[ph] > 0) {
+    double rho_star = s->wrho[ph] / s->w[ph];
+    pressure = s->wp[ph] / s->w[ph];
     for (int d = 0; d < dim; d++) {
-      u[d] = s->wu[d] / s->w;
+      u[d] = s->wu[ph][d] / s->w[ph];
       pressure += rho_star * (e->c->gravity[d] - aw[d]) * (p->x[d][k] - xs[d]);
     }
   }
@@ -81,7 +82,7 @@ static void ghost_from_shepard(struct engine *e, long k, const double *xs, const
   int no_slip = e->c->walls[w].slip == SLIP_NO;
   for (int d = 0; d < dim; d++) p->v[d][k] = no_slip ? 2.0 * uw[d] - u[d] : u[d] - 2.0 * un * n[d];
   p->p[k] = pressure;
-  p->rho[k] = e->c->phases[majority_phase(e, s)].rho0;
+  p->rho[k] = e->c->phases[ph].rho0;
   p->m[k] = p->rho[k] * e->vol0;
 }
 
@@ -106,7 +107,7 @@ void pass_wall_ghosts(struct engine *e) {
     double xs[3];
     wall_mirror_point(e, k, xs);
     struct shepard s;
-    shepard_at(e, xs, 0, &s, &pairs);
+    shepard_at(e, xs, &s, &pairs);
     ghost_from_shepard(e, k, xs, &s);
   }
   e->pass_pairs += pairs;

@@ -382,7 +382,7 @@ static void test_round_trip(void) {
 /* Wall motion: the laws, their defaults, the round trip and the required keys. */
 static void test_motion(void) {
   const char *moving = "walls:\n  - box: {min: [0, 0], max: [1, 1]}\n    motion:\n"
-                       "      translation: {amplitude: [0.01, 0], period: 0.83, phase: -1.5707963267948966}\n"
+                       "      translation: {amplitude: [0.01, 0], period: 0.83, phase: 3.141592653589793}\n"
                        "      rotation: {amplitude: 0.05, period: 2, centre: [0.5, 0.5], ramp: {shape: smooth, time: 3}}\n";
   struct case_def c;
   CHECK(load(variant(13, moving), 0, NULL, &c) == 0, "loads: %s", err);
@@ -402,6 +402,9 @@ static void test_motion(void) {
   expect_error(variant(13, "walls: [{box: {min: [0, 0], max: [1, 1]}, motion: {translation: {amplitude: [1, 0], "
                            "period: 1, ramp: {shape: cosine, time: 1}}}}]"),
                0, NULL, "walls.0.motion.translation.ramp.shape: got 'cosine'", "none, linear, smooth");
+  expect_error(variant(13, "walls: [{box: {min: [0, 0], max: [1, 1]}, motion: {translation: {amplitude: [0.01, 0], "
+                           "period: 1, phase: 1.5708}}}]"),
+               0, NULL, "case.yaml:13: walls.0.motion: starts displaced (|d(0)| = 0.01 m", "zero displacement");
 }
 
 /* Probe kinds: their keys, the round trip, the keys of another kind, the sensor axis, the
@@ -451,6 +454,8 @@ static void test_motion_table(void) {
   round_trip(variant(13, table));
   expect_error(variant(13, "walls: [{box: {min: [0, 0], max: [1, 1]}, motion: {table: [[0, 0, 0, 0], [0, 1, 0, 0]]}}]"),
                0, NULL, "case.yaml:13: walls.0.motion.table.1: got time 0 after 0", "strictly increasing");
+  expect_error(variant(13, "walls: [{box: {min: [0, 0], max: [1, 1]}, motion: {table: [[0, 0, 0, 0.1], [1, 0, 0, 0]]}}]"),
+               0, NULL, "case.yaml:13: walls.0.motion: starts displaced (|d(0)| = 0 m, theta(0) = 0.1 rad)", "zero displacement");
   expect_error(variant(13, "walls: [{box: {min: [0, 0], max: [1, 1]}, motion: {table: [[0, 0, 0]]}}]"),
                0, NULL, "case.yaml:13: walls.0.motion.table: got a list of 1 item", "a list of 2 to 256");
   expect_error(variant(13, "walls: [{box: {min: [0, 0], max: [1, 1]}, motion: {table: [[0, 0, 0], [1, 0, 0]]}}]"),
