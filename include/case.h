@@ -90,6 +90,8 @@ struct case_def {
   enum kernel_kind kernel;
   double dx;                 /* initial particle spacing [m] */
   double h_over_dx;          /* smoothing length / dx [-] */
+  int has_lattice_origin;    /* resolution.origin given: every fluid region on one lattice */
+  double lattice_origin[3];  /* fluid nodes at origin + (i + 1/2) dx [m] */
   double gravity[3];         /* [m/s^2] */
   double potential_omega;    /* quadratic potential 1/2 omega^2 |x - c|^2: force -omega^2 (x - c) [1/s] */
   double potential_centre[3];   /* [m] */

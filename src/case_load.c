@@ -39,7 +39,7 @@ static const char *const ROOT_KEYS[] = {"name", "description", "dimension", "sch
                                         "resolution", "gravity", "potential", "time", "output", "domain",
                                         "phases", "fluids", "walls", "physics", "initial",
                                         "probes", "parallel", NULL};
-static const char *const RESOLUTION_KEYS[] = {"dx", "h_over_dx", NULL};
+static const char *const RESOLUTION_KEYS[] = {"dx", "h_over_dx", "origin", NULL};
 static const char *const TIME_KEYS[] = {"end", "cfl", "max_steps", "dt_min", NULL};
 static const char *const OUTPUT_KEYS[] = {"interval", "stats_interval", "probes_interval",
                                           "progress_interval", "checkpoint_interval", NULL};
@@ -743,12 +743,21 @@ static int read_top(struct map *m, struct case_def *c) {
          vec(&pot, "centre", 0, c->potential_centre);
 }
 
+/* resolution.origin: the common lattice origin of the fluid regions (absent: each region's
+ * lattice is anchored at its shape's lower corner). */
+static int read_lattice_origin(const struct map *r, struct case_def *c) {
+  char path[PATH_LEN];
+  c->has_lattice_origin = get(r, "origin", path) != NULL;
+  return vec(r, "origin", 0, c->lattice_origin);
+}
+
 static int read_run(const struct map *root, struct case_def *c) {
   struct map r, t, o;
   double h_default = c->kernel == KERNEL_GAUSSIAN ? 1.33 : 2.0;
   return sub(root, "resolution", RESOLUTION_KEYS, &r) ||
          num(&r, "dx", &R_POSITIVE, REQUIRED, &c->dx) ||
          num(&r, "h_over_dx", &R_H_OVER_DX, h_default, &c->h_over_dx) ||
+         read_lattice_origin(&r, c) ||
          sub(root, "time", TIME_KEYS, &t) || num(&t, "end", &R_POSITIVE, REQUIRED, &c->t_end) ||
          num(&t, "cfl", &R_CFL, 1.0, &c->cfl) ||
          lnum(&t, "max_steps", &R_COUNT, 0, &c->max_steps) ||
@@ -1036,6 +1045,7 @@ static void put_head(FILE *f, const struct case_def *c) {
   fputs("resolution:\n", f);
   put_num(f, "  ", "dx", c->dx);
   put_num(f, "  ", "h_over_dx", c->h_over_dx);
+  if (c->has_lattice_origin) put_vec(f, "  ", "origin", c->lattice_origin, dim);
   put_vec(f, "", "gravity", c->gravity, dim);
   fputs("potential:\n", f);
   put_num(f, "  ", "omega", c->potential_omega);

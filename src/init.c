@@ -167,7 +167,8 @@ static int fill_fluids(const struct case_def *c, int rank, int n_ranks, struct p
     double lo[3], hi[3], anchor[3], x[3];
     struct lattice l;
     shape_bbox(s, c->dimension, 0, lo, hi);
-    shape_anchor(s, c->dimension, anchor);
+    if (c->has_lattice_origin) memcpy(anchor, c->lattice_origin, sizeof anchor);
+    else shape_anchor(s, c->dimension, anchor);
     lattice_cover(&l, c->dimension, c->dx, anchor, lo, hi);
     for (long node = 0, size = lattice_size(&l); node < size; node++) {
       lattice_node(&l, node, x);

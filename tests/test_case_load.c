@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include "case_load.h"
+#include "init.h"
 #include "check.h"
 
 #define ERR_LEN 1024
@@ -379,6 +380,32 @@ static void test_round_trip(void) {
                "case.yaml:7: walls.0.polygon: got a polygon in 3D", "expected box or circle");
 }
 
+/* resolution.origin: one lattice for every fluid region. An air box whose lower corner is 0.015 dx
+ * off the water's lattice loses its top row (it falls 0.485 dx from the lid, inside dx/2, and is
+ * not filled); on the common lattice anchored at the tank's corner the row is there. */
+static void test_lattice_origin(void) {
+  const char *tank = "name: tank\ndimension: 2\nresolution: {dx: 0.02}\ntime: {end: 1.0}\n"
+                     "domain: {min: [-0.1, -0.1], max: [1.1, 1.1]}\n"
+                     "phases: [{name: water, rho0: 1000, c0: 30}, {name: air, rho0: 1, c0: 340}]\n"
+                     "fluids: [{phase: water, box: {min: [0, 0], max: [1, 0.5]}},\n"
+                     "         {phase: air, box: {min: [0, 0.5003], max: [1, 1]}}]\n"
+                     "walls: [{box: {min: [0, 0], max: [1, 1]}}]\n";
+  struct case_def c;
+  struct init_counts own, common;
+  char msg[256];
+  CHECK(load(tank, 0, NULL, &c) == 0 && !c.has_lattice_origin, "loads: %s", err);
+  CHECK(init_particles(&c, 0.04, 0, 1, NULL, &own, msg, sizeof msg) == 0, "counts: %s", msg);
+  const char *set[] = {"resolution.origin=[0, 0]"};
+  CHECK(load(tank, 1, set, &c) == 0 && c.has_lattice_origin, "loads with origin: %s", err);
+  CHECK(init_particles(&c, 0.04, 0, 1, NULL, &common, msg, sizeof msg) == 0, "counts: %s", msg);
+  CHECK(own.fluid[1] == 24 * 50 && common.fluid[1] == 25 * 50 && common.fluid[0] == 25 * 50,
+        "air rows: %ld particles on its own lattice (1200 expected), %ld on the common one (1250)",
+        own.fluid[1], common.fluid[1]);
+  round_trip(variant(3, "resolution: {dx: 0.02, origin: [0, 0.01]}"));
+  expect_error(variant(3, "resolution: {dx: 0.02, origin: [0]}"), 0, NULL,
+               "case.yaml:3: resolution.origin: got a list of 1 item", "one per dimension");
+}
+
 /* Wall motion: the laws, their defaults, the round trip and the required keys. */
 static void test_motion(void) {
   const char *moving = "walls:\n  - box: {min: [0, 0], max: [1, 1]}\n    motion:\n"
@@ -483,6 +510,7 @@ int main(void) {
   test_motion();
   test_probe_kinds();
   test_motion_table();
+  test_lattice_origin();
   unlink(path);
   rmdir(dir);
   return check_report("test_case_load");
