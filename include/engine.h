@@ -31,7 +31,7 @@ struct stage_op {
 
 /** Halo field sets (bit mask). */
 enum { HF_POS = 1, HF_VEL = 2, HF_RHO = 4, HF_P = 8, HF_MASS = 16, HF_GRAD_RHO = 32, HF_SHIFT = 64,
-       HF_DIV = 128, HF_SURFACE = 256 };
+       HF_DIV = 128, HF_SURFACE = 256, HF_RHO_SHEPARD = 512 };
 
 /** Terms and passes a scene needs, decided once at start-up from the case. */
 enum {
@@ -42,7 +42,8 @@ enum {
   FEAT_SURFACE = 16,       /* free-surface detection (region, normals) */
   FEAT_TIC = 32,           /* tensile instability control */
   FEAT_SHARPNESS = 64,     /* interface sharpness force */
-  FEAT_CENTRAL = 128       /* quadratic potential body force */
+  FEAT_CENTRAL = 128,      /* quadratic potential body force */
+  FEAT_SHEPARD = 256       /* scheme delta-sph: same-phase Shepard density and the pressure from it */
 };
 
 /** Work arrays of the scheme, sized to the particle capacity; optional ones stay NULL when the
@@ -60,6 +61,7 @@ struct work {
   double *region;                  /* FEAT_SURFACE: 1 in the free-surface region (band) */
   double *normal[3];               /* FEAT_SURFACE: outward unit normal */
   double *lambda;                  /* FEAT_SURFACE: smallest eigenvalue of the B matrix */
+  double *rho_s;                   /* FEAT_SHEPARD: same-phase Shepard density [kg/m^3] */
 };
 
 struct engine {

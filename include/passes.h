@@ -53,6 +53,16 @@ void wall_mirror_point(const struct engine *e, long k, double *xs);
  *  free-/no-slip velocity (Marrone et al. 2011). Owned ghosts only. */
 void pass_wall_ghosts(struct engine *e);
 
+/** Scheme delta-sph, per stage: the same-phase Shepard density of the owned fluid (paper 001
+ *  Eq. 13) and the pressure from it. */
+void pass_shepard_density(struct engine *e);
+
+/** The density the renormalised gradient and the delta-SPH diffusion act on: the Shepard density
+ *  with scheme delta-sph, otherwise the state density. */
+static inline const double *diffused_density(const struct engine *e) {
+  return (e->features & FEAT_SHEPARD) ? e->w.rho_s : e->p.rho;
+}
+
 /** Per stage: particle volumes; renormalised density gradient over same-phase neighbours
  *  (paper 000 Eq. 7); velocity divergence over all neighbours; with shifting, the shifting
  *  velocity du of Eqs. 13-15. */

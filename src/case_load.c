@@ -796,14 +796,15 @@ static double default_u_max(const struct case_def *c) {
 static int read_physics(const struct map *root, struct case_def *c) {
   struct map ph;
   int shifting, tic, fs, form, limit, iface_p;
+  int plus = c->scheme == SCHEME_DELTA_PLUS;   /* delta-sph: no shifting, TIC or damper (paper 001) */
   double mode;
   if (sub(root, "physics", PHYSICS_KEYS, &ph) ||
       num(&ph, "delta", &R_NONNEGATIVE, 0.1, &c->delta) ||
       num(&ph, "artificial_viscosity", &R_NONNEGATIVE, 0.1, &c->alpha) ||
-      num(&ph, "acoustic_damper", &R_NONNEGATIVE, 10, &c->acoustic_damper) ||
-      choice(&ph, "shifting", SHIFTING_NAMES, SHIFTING_CONSISTENT, &shifting) ||
+      num(&ph, "acoustic_damper", &R_NONNEGATIVE, plus ? 10 : 0, &c->acoustic_damper) ||
+      choice(&ph, "shifting", SHIFTING_NAMES, plus ? SHIFTING_CONSISTENT : SHIFTING_NONE, &shifting) ||
       num(&ph, "u_max", &R_POSITIVE, default_u_max(c), &c->u_max) ||
-      choice(&ph, "tensile_control", BOOL_NAMES, 1, &tic) ||
+      choice(&ph, "tensile_control", BOOL_NAMES, plus, &tic) ||
       choice(&ph, "free_surface", FREE_SURFACE_NAMES, FREE_SURFACE_AUTO, &fs) ||
       num(&ph, "surface_band", &R_NONNEGATIVE, 2.0, &c->surface_band) ||
       num(&ph, "interface_mode", &R_MODE, 4, &mode) ||

@@ -18,7 +18,8 @@ static double *grow_if(double *a, long n, int on) { return on ? grow(a, n) : a; 
 
 /* 1 if an optional array of a feature that is on has not been allocated yet. */
 static int optional_missing(const struct engine *e) {
-  return ((e->features & FEAT_SHIFT) && !e->w.du[0]) || ((e->features & FEAT_SURFACE) && !e->w.surface);
+  return ((e->features & FEAT_SHIFT) && !e->w.du[0]) || ((e->features & FEAT_SURFACE) && !e->w.surface) ||
+         ((e->features & FEAT_SHEPARD) && !e->w.rho_s);
 }
 
 void engine_work_reserve(struct engine *e) {
@@ -44,6 +45,7 @@ void engine_work_reserve(struct engine *e) {
   w->surface = grow_if(w->surface, n, f & FEAT_SURFACE);
   w->region = grow_if(w->region, n, f & FEAT_SURFACE);
   w->lambda = grow_if(w->lambda, n, f & FEAT_SURFACE);
+  w->rho_s = grow_if(w->rho_s, n, f & FEAT_SHEPARD);
   w->capacity = n;
 }
 
@@ -62,6 +64,7 @@ static int halo_field_list(struct engine *e, int mask, double **f) {
   if (mask & HF_MASS) f[n++] = p->m;
   if (mask & HF_DIV) f[n++] = e->w.div;
   if (mask & HF_SURFACE) f[n++] = e->w.surface;
+  if (mask & HF_RHO_SHEPARD) f[n++] = e->w.rho_s;
   return n;
 }
 
@@ -86,6 +89,7 @@ static unsigned case_features(const struct engine *e) {
   if (c->tensile_control) f |= FEAT_TIC;
   if (c->interface_sharpness > 0 && c->n_phases > 1) f |= FEAT_SHARPNESS;
   if (c->potential_omega > 0) f |= FEAT_CENTRAL;
+  if (c->scheme == SCHEME_DELTA_SPH) f |= FEAT_SHEPARD;
   return f;
 }
 
@@ -124,12 +128,20 @@ void engine_assemble(struct engine *e) {
   interface_table(e->c->interface_mode, e->iface);
   e->n_ops = 0;
   add_op(e, "halo: positions, velocities, densities, pressures", NULL, HF_POS | HF_VEL | HF_RHO | HF_P, 0);
+  if (f & FEAT_SHEPARD) {   /* the pressure first: the wall ghosts interpolate it */
+    add_op(e, "volumes m/rho of owned and halo particles", pass_volumes, 0, 0);
+    add_op(e, "neighbour lists of the owned fluid (once per step)", pass_neighbour_lists, 0, 1);
+    add_op(e, "Shepard density and pressure (delta-sph)", pass_shepard_density, 0, 0);
+    add_op(e, "halo: Shepard densities, pressures", NULL, HF_RHO_SHEPARD | HF_P, 0);
+  }
   if (f & FEAT_WALLS) {
     add_op(e, "wall ghosts: Shepard interpolation at mirror points", pass_wall_ghosts, 0, 0);
     add_op(e, "halo: wall ghost values", NULL, HF_VEL | HF_RHO | HF_P | HF_MASS, 0);
   }
-  add_op(e, "volumes m/rho of owned and halo particles", pass_volumes, 0, 0);
-  add_op(e, "neighbour lists of the owned fluid (once per step)", pass_neighbour_lists, 0, 1);
+  if (!(f & FEAT_SHEPARD)) {
+    add_op(e, "volumes m/rho of owned and halo particles", pass_volumes, 0, 0);
+    add_op(e, "neighbour lists of the owned fluid (once per step)", pass_neighbour_lists, 0, 1);
+  }
   if (f & FEAT_SURFACE) {
     add_op(e, "free surface: eigenvalue + umbrella detection, normals (once per step)", pass_free_surface, 0, 1);
     add_op(e, "halo: free-surface flags (once per step)", NULL, HF_SURFACE, 1);
@@ -148,10 +160,10 @@ void engine_assemble(struct engine *e) {
 void engine_print_pipeline(const struct engine *e) {
   static const char *names[] = {"wall ghosts", "shifting", "delta-u terms", "acoustic damper",
                                 "free-surface detection", "tensile instability control",
-                                "interface sharpness", "quadratic potential"};
+                                "interface sharpness", "quadratic potential", "Shepard density"};
   if (e->rank) return;
   printf("terms:");
-  for (int k = 0; k < 8; k++)
+  for (int k = 0; k < 9; k++)
     if (e->features & (1u << k)) printf(" [%s]", names[k]);
   printf("\npipeline per RK stage (%d operations):\n", e->n_ops);
   for (int k = 0; k < e->n_ops; k++) printf("  %d. %s\n", k + 1, e->ops[k].name);

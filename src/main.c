@@ -60,8 +60,8 @@ static int supported(const struct case_def *c, char *err, size_t len) {
   if (c->n_phases > 1)
     return snprintf(err, len, "%s: phases: this build (SINGLE_PHASE=1) runs single-phase cases only", c->source_file), 1;
 #endif
-  if (c->scheme == SCHEME_DELTA_PLUS) return 0;
-  snprintf(err, len, "%s: scheme: only delta-plus is implemented in this version", c->source_file);
+  if (c->scheme == SCHEME_DELTA_PLUS || c->scheme == SCHEME_DELTA_SPH) return 0;
+  snprintf(err, len, "%s: scheme: only delta-plus and delta-sph are implemented in this version", c->source_file);
   return 1;
 }
 

@@ -53,6 +53,7 @@ static inline __attribute__((always_inline)) void fluid_sums(const struct engine
   const double *restrict du[3] = {w->du[0], w->du[1], w->du[2]};
   const double *restrict grad_rho[3] = {w->grad_rho[0], w->grad_rho[1], w->grad_rho[2]};
   const double *restrict rho = p->rho, *restrict pres = p->p, *restrict vol = w->vol, *restrict div = w->div;
+  const double *restrict rho_d = diffused_density(e);   /* the density the diffusion acts on */
   const int *restrict phase = p->phase;
   const long i = ci->i;
   const int ph = ci->phase;
@@ -115,7 +116,7 @@ static inline __attribute__((always_inline)) void fluid_sums(const struct engine
       for (int d = 0; d < dim; d++) s.damper[d] += (div[j] - div[i]) * fv * dx[d];
     double gsum = 0;
     for (int d = 0; d < dim; d++) gsum -= (gri[d] + grad_rho[d][j]) * dx[d];
-    s.diff -= (2.0 * (rho[j] - rhoi) - gsum) * fv;
+    s.diff -= (2.0 * (rho_d[j] - rho_d[i]) - gsum) * fv;
   }
   *out = s;
   *pairs += n_pairs;
@@ -157,7 +158,11 @@ static void finish(struct engine *e, const struct centre *ci, const struct fluid
   double k_visc = e->c->alpha * e->h * f->c0 * f->rho0 + 2.0 * (p->dim + 2) * f->viscosity;
   double k_damp = e->damper_coef[1 + ci->phase], g[3];
   body_force(e, i, g);
-  e->w.drho[i] = -p->rho[i] * e->w.div[i] + e->c->delta * e->h * f->c0 * s->diff + s->drho_du;
+  /* delta-sph integrates m/V: its diffusion is -(V/rho^S) times the volume diffusion (paper 001
+   * Eq. 21 with the factor 2 restored), i.e. the density diffusion scaled by rho_i / rho^S_i */
+  double diffusion = e->c->delta * e->h * f->c0 * s->diff;
+  if (e->features & FEAT_SHEPARD) diffusion *= p->rho[i] / e->w.rho_s[i];
+  e->w.drho[i] = -p->rho[i] * e->w.div[i] + diffusion + s->drho_du;
   for (int d = 0; d < p->dim; d++)
     e->w.dv[d][i] = (-s->grad_p[d] + k_visc * s->visc[d] + s->mom_du[d] + e->c->interface_sharpness * s->sharp[d]) /
                         p->rho[i] + k_damp * s->damper[d] + g[d];

@@ -19,7 +19,7 @@ static inline __attribute__((always_inline)) int gradients_of(struct engine *e, 
                                                               const int shift, const int multi) {
   const struct parts *p = &e->p;
   const double *restrict x[3] = {p->x[0], p->x[1], p->x[2]}, *restrict v[3] = {p->v[0], p->v[1], p->v[2]};
-  const double *restrict vol = e->w.vol, *restrict rho = p->rho;
+  const double *restrict vol = e->w.vol, *restrict rho = diffused_density(e);
   const int *restrict phase = p->phase;
   const int ph = phase[i];
   const double support2 = e->kern.support2, rhoi = rho[i];

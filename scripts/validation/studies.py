@@ -39,6 +39,8 @@ IMPACT_RUN = {"time.end": 0.8, "output.interval": 0}
 POSITION_ONLY = "delta-plus, position-only shifting"
 HYDRO_DOMAIN = {"domain.min": "[-0.5,-0.5]", "domain.max": "[1.5,2.5]"}   # room for 4 ghost layers at dx = 0.1
 HYDRO_LONG = "delta-plus, t sqrt(g/Hw) = 40"
+WEIGHTED = {"physics.interface_pressure": "density-weighted"}
+WEIGHTED_LABEL = "delta-plus, density-weighted interface pressure"
 DB2_COARSE = {"domain.min": "[-0.3,-0.3]", "domain.max": "[3.516,2.1]"}    # room for 4 ghost layers at dx = 0.048
 RT_RUNGS = [rung(dx, n, q, **{"time.end": 3.0, "output.interval": 0.05}) for dx, n, q in
             ((0.04, 1, True), (0.02, 2, True), (0.01, 2, False))]
@@ -57,7 +59,13 @@ STUDIES = [
                   rung(0.05, 2, True, **{"time.end": 1.0}), rung(0.025, 2, **{"time.end": 1.0}),
                   rung(0.1, 1, True, label=HYDRO_LONG, **HYDRO_DOMAIN, **{"time.end": 12.77}),
                   rung(0.05, 2, label=HYDRO_LONG, **{"time.end": 12.77}),
-                  rung(0.04, 2, label=HYDRO_LONG, **{"time.end": 12.77})],
+                  rung(0.04, 2, label=HYDRO_LONG, **{"time.end": 12.77}),
+                  rung(0.1, 1, True, label=WEIGHTED_LABEL, **HYDRO_DOMAIN, **WEIGHTED, **{"time.end": 1.0}),
+                  rung(0.05, 2, True, label=WEIGHTED_LABEL, **WEIGHTED, **{"time.end": 1.0}),
+                  rung(0.025, 2, label=WEIGHTED_LABEL, **WEIGHTED, **{"time.end": 1.0}),
+                  rung(0.1, 1, True, label=WEIGHTED_LABEL + ", t sqrt(g/Hw) = 40", **HYDRO_DOMAIN, **WEIGHTED,
+                       **{"time.end": 12.77}),
+                  rung(0.04, 2, label=WEIGHTED_LABEL + ", t sqrt(g/Hw) = 40", **WEIGHTED, **{"time.end": 12.77})],
         "plot": "hydrostatic",
     },
     drop_study("oscillating-drop", "Oscillating drop, one fluid (paper 001 section III.B)", 1.0,
@@ -88,7 +96,9 @@ STUDIES = [
                  [rung(0.048, 2, True, **DB2_COARSE, **IMPACT_RUN), rung(0.024, 2, **IMPACT_RUN),
                   rung(0.012, 2, **IMPACT_RUN),
                   rung(0.048, 2, True, label=POSITION_ONLY, **DB2_COARSE, **IMPACT_RUN, **{"physics.shifting": "position"}),
-                  rung(0.024, 2, label=POSITION_ONLY, **IMPACT_RUN, **{"physics.shifting": "position"})]),
+                  rung(0.024, 2, label=POSITION_ONLY, **IMPACT_RUN, **{"physics.shifting": "position"}),
+                  rung(0.048, 2, True, label=WEIGHTED_LABEL, **DB2_COARSE, **IMPACT_RUN, **WEIGHTED),
+                  rung(0.024, 2, label=WEIGHTED_LABEL, **IMPACT_RUN, **WEIGHTED)]),
     {
         "id": "rayleigh-taylor-growth",
         "case": "rayleigh-taylor",
@@ -120,7 +130,12 @@ STUDIES = [
 ]
 
 SW_RUNGS = [rung(0.05, 1, True), rung(0.025, 2, True), rung(0.0125, 2, True), rung(0.00625, 2),
-            rung(0.05, 2, True, label="delta-plus, water-air (paper 003)", case="standing-wave")]
+            rung(0.05, 2, True, label="delta-plus, water-air (paper 003)", case="standing-wave"),
+            rung(0.025, 2, label="delta-plus, water-air (paper 003)", case="standing-wave"),
+            rung(0.05, 2, True, label="delta-plus, water-air, density-weighted interface pressure",
+                 case="standing-wave", **WEIGHTED),
+            rung(0.025, 2, label="delta-plus, water-air, density-weighted interface pressure",
+                 case="standing-wave", **WEIGHTED)]
 STUDIES += [
     {
         "id": "standing-wave-period",
