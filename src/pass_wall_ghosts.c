@@ -1,7 +1,7 @@
 /* pass_wall_ghosts.c — values of the ghost particles (Marrone et al. 2011, CMAME 200), fixed in
  * their wall's frame: Shepard interpolation of pressure and velocity at the ghost's mirror point
- * r* over the phase with the largest Shepard weight there (a ghost beside air behaves as air),
- * p_k = p* + rho* (g - a_w).(r_k - r*), u_k = u* with its normal component relative to the
+ * r* (over the phase with the largest Shepard weight there with the density-weighted interface
+ * pressure, over every phase otherwise), p_k = p* + rho* (g - a_w).(r_k - r*), u_k = u* with its normal component relative to the
  * wall mirrored (free slip) or 2 u_w - u* (no slip); u_w, a_w = 0 for a fixed wall. */
 #include <math.h>
 #include <string.h>
@@ -48,6 +48,21 @@ static int majority_phase(const struct engine *e, const struct shepard *s) {
   return best;
 }
 
+/* The Shepard sums a ghost takes its values from, into src = {sum W V, and times p, rho, u}: with
+ * the density-weighted interface pressure those of its majority phase ph only (the ghost stands
+ * for that phase, theory section 4); with the paper's pair sum those of every phase (Marrone et
+ * al. 2011: a ghost beside a water particle in air carries part of its pressure). */
+static void ghost_source(const struct engine *e, const struct shepard *s, int ph, double *src) {
+  int weighted = e->c->interface_pressure == IFACE_P_DENSITY_WEIGHTED;
+  for (int k = 0; k < 6; k++) src[k] = 0;
+  for (int q = weighted ? ph : 0; q < (weighted ? ph + 1 : e->c->n_phases); q++) {
+    src[0] += s->w[q];
+    src[1] += s->wp[q];
+    src[2] += s->wrho[q];
+    for (int d = 0; d < 3; d++) src[3 + d] += s->wu[q][d];
+  }
+}
+
 /* Velocity [m/s] and acceleration [m/s^2] of wall w at point x (zero for a fixed wall). */
 static void wall_kinematics(const struct engine *e, int w, const double *x, double *u, double *a) {
   int dim = e->p.dim;
@@ -66,11 +81,13 @@ static void ghost_from_shepard(struct engine *e, long k, const double *xs, const
   for (int d = 0; d < dim; d++) mid[d] = 0.5 * (xs[d] + p->x[d][k]);
   wall_kinematics(e, w, mid, uw, aw);
   int ph = majority_phase(e, s);
-  if (s->w[ph] > 0) {
-    double rho_star = s->wrho[ph] / s->w[ph];
-    pressure = s->wp[ph] / s->w[ph];
+  double src[6];   /* sum W V, and times p, rho, u */
+  ghost_source(e, s, ph, src);
+  if (src[0] > 0) {
+    double rho_star = src[2] / src[0];
+    pressure = src[1] / src[0];
     for (int d = 0; d < dim; d++) {
-      u[d] = s->wu[ph][d] / s->w[ph];
+      u[d] = src[3 + d] / src[0];
       pressure += rho_star * (e->c->gravity[d] - aw[d]) * (p->x[d][k] - xs[d]);
     }
   }
