@@ -57,7 +57,8 @@ static const char *const RAMP_KEYS[] = {"shape", "time", NULL};
 static const char *const PHYSICS_KEYS[] = {"delta", "artificial_viscosity", "acoustic_damper",
                                            "shifting", "u_max", "tensile_control", "free_surface",
                                            "surface_band", "interface_mode", "damper_form",
-                                           "interface_sharpness", "limit_surface_shifting", NULL};
+                                           "interface_sharpness", "limit_surface_shifting",
+                                           "surface_tension", NULL};
 static const char *const INITIAL_KEYS[] = {"pressure", NULL};
 static const char *const PROBE_KEYS[] = {"name", "kind", "position", "diameter", "axis",
                                          "interpolation", "phase", NULL};
@@ -784,7 +785,8 @@ static int read_physics(const struct map *root, struct case_def *c) {
       num(&ph, "interface_mode", &R_MODE, 4, &mode) ||
       choice(&ph, "damper_form", DAMPER_NAMES, DAMPER_SYMMETRIC, &form) ||
       num(&ph, "interface_sharpness", &R_NONNEGATIVE, 0, &c->interface_sharpness) ||
-      choice(&ph, "limit_surface_shifting", BOOL_NAMES, 0, &limit))
+      choice(&ph, "limit_surface_shifting", BOOL_NAMES, 0, &limit) ||
+      num(&ph, "surface_tension", &R_NONNEGATIVE, 0, &c->surface_tension))
     return 1;
   c->shifting = (enum shifting_kind)shifting;
   c->tensile_control = tic;
@@ -1137,6 +1139,7 @@ static void put_tail(FILE *f, const struct case_def *c) {
   put_word(f, "  ", "damper_form", DAMPER_NAMES[c->damper_form]);
   put_num(f, "  ", "interface_sharpness", c->interface_sharpness);
   put_word(f, "  ", "limit_surface_shifting", BOOL_NAMES[c->limit_surface_shifting != 0]);
+  put_num(f, "  ", "surface_tension", c->surface_tension);
   fputs("initial:\n", f);
   put_word(f, "  ", "pressure", PRESSURE_NAMES[c->initial_pressure]);
   put_list_key(f, "probes", c->n_probes);
