@@ -63,7 +63,7 @@ struct work {
   double *lambda;                  /* FEAT_SURFACE: smallest eigenvalue of the B matrix */
   double *interface_normal[3];     /* FEAT_SURFACE_TENSION: unit normal of the colour gradient,
                                       toward the other phase; 0 off the interface band */
-  double *colour_grad;             /* FEAT_SURFACE_TENSION: |grad c|, density-weighted [1/m] */
+  double *colour_grad;             /* FEAT_SURFACE_TENSION: |grad chi| on the band, else 0 [1/m] */
   double *kappa_curvature;         /* FEAT_SURFACE_TENSION: div n, 0 off the band [1/m] */
 };
 

@@ -74,14 +74,14 @@ void shifting_velocity(struct engine *e, long i, const double *sum_gradw, int n_
  *  right-hand sides of owned fluid particles (paper 000 Eqs. 5-10, 16-20). */
 void pass_fluid_rhs(struct engine *e);
 
-/** Surface tension, first pass: the density-weighted colour gradient grad c over the fluid
- *  neighbours of the other phases, its magnitude and unit normal of owned fluid particles (the
- *  normal is 0 where the unweighted gradient is below 0.01/h); 0 for wall ghosts. */
+/** Surface tension, first pass: the colour gradient over the fluid neighbours of the other
+ *  phases, its magnitude [1/m] and unit normal of owned fluid particles (both 0 where the
+ *  gradient is below 0.01/h); 0 for wall ghosts. */
 void pass_interface_normals(struct engine *e);
 
 /** Surface tension, second pass (after pass_fluid_rhs, the normals halo-updated): curvature
- *  kappa = div n (reproducing divergence) and the CSF acceleration -sigma kappa n |grad c| / rho
- *  added to du/dt of owned fluid particles (Adami et al. 2010; paper 004 Eqs. 11-16). */
+ *  kappa = div n (renormalised divergence) [1/m] and the CSF acceleration
+ *  -sigma kappa n |grad chi| / rho added to du/dt of owned fluid particles (Brackbill et al. 1992). */
 void pass_surface_tension(struct engine *e);
 
 #endif

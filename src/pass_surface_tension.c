@@ -1,15 +1,17 @@
 /* pass_surface_tension.c — continuum surface force between the fluid phases (Brackbill et al.
- * 1992) in the SPH form of Adami, Hu & Adams 2010 (J. Comput. Phys. 229:5011) as written in
- * paper 004 Eqs. 11-16 (Zheng et al.), for fluid i and fluid neighbours j (wall ghosts excluded):
- *   grad c_i = sum_{j other phase} c_ij grad_i W_ij V_j,  c_ij = 2 rho_i / (rho_i + rho_j),
- *   n_i = grad c_i / |grad c_i|  where |grad chi_i| >= 0.01/h, else n_i = 0,
- *        grad chi_i = sum_{j other phase} grad_i W_ij V_j (the unweighted colour gradient),
- *   kappa_i = dim sum_{j: n_j != 0} (phi_ij n_j - n_i) . grad_i W_ij V_j
- *             / sum_{j: n_j != 0} r_ji . grad_i W_ij V_j,   phi_ij = +1 same phase, -1 other,
- *   du_i/dt += -sigma kappa_i n_i |grad c_i| / rho_i.
+ * 1992, J. Comput. Phys. 100:335) in SPH, for fluid i and fluid neighbours j (wall ghosts
+ * excluded; all other phases count as one):
+ *   grad chi_i = sum_{j other phase} grad_i W_ij V_j                (colour gradient, Morris 2000),
+ *   n_i = grad chi_i / |grad chi_i|  where |grad chi_i| h >= 0.01, else n_i = 0,
+ *   G_i = sum_{j: n_j != 0} (phi_ij n_j - n_i) (x) grad_i W_ij V_j,  phi_ij = +1 same phase, -1 other,
+ *   B_i = sum_{j: n_j != 0} r_ji (x) grad_i W_ij V_j,
+ *   kappa_i = trace(G_i B_i^-1)   (dim trace G / trace B, Adami et al. 2010, where det B < 0.1),
+ *   du_i/dt += -sigma kappa_i n_i |grad chi_i| / rho_i.
  * n points toward the other phase and kappa = div n, so the force points to the centre of
- * curvature on both sides; with c_ij the acceleration is the same on both sides of an interface
- * (density ratio independent). See doc/theory.md section 4d. */
+ * curvature on both sides. The force per volume is the same on both sides of the interface
+ * (the colour is not density-weighted as in Adami et al. 2010 and paper 004 Eq. 11): it is the
+ * weighting that balances the pressure gradient -sum_j (p_j + p_i) grad_i W_ij V_j of this
+ * scheme, which is not density-weighted either. See doc/theory.md section 4d. */
 #include <math.h>
 #include "linalg.h"
 #include "passes.h"
@@ -17,15 +19,13 @@
 #define COLOUR_GRAD_MIN 0.01     /* |grad chi| h below which a particle has no interface normal */
 #define CURVATURE_MIN_DET 0.1    /* det of B below which the curvature takes Adami's scalar form */
 
-/* The colour gradients of owned fluid particle i: weighted (grad c) and unweighted (grad chi).
- * Returns the number of pairs within the support. */
-static long colour_gradients(const struct engine *e, long i, const struct neighbours *nb,
-                             double *grad_c, double *grad_chi) {
+/* The colour gradient of owned fluid particle i, grad chi_i = sum_{j other phase} grad_i W_ij V_j
+ * [1/m]. Returns the number of pairs within the support. */
+static long colour_gradient(const struct engine *e, long i, const struct neighbours *nb, double *grad_chi) {
   const struct parts *p = &e->p;
   const int dim = p->dim, ph = p->phase[i];
-  const double rhoi = p->rho[i];
   long pairs = 0;
-  for (int d = 0; d < dim; d++) grad_c[d] = grad_chi[d] = 0;
+  for (int d = 0; d < dim; d++) grad_chi[d] = 0;
   for (int n = 0; n < nb->n; n++) {
     const long j = nb->j[n];
     double dx[3], r2 = 0;
@@ -36,11 +36,8 @@ static long colour_gradients(const struct engine *e, long i, const struct neighb
     if (r2 >= e->kern.support2) continue;
     pairs++;
     if (p->phase[j] == ph || p->phase[j] == PHASE_WALL) continue;
-    double fv = kernel_f(&e->kern, r2) * e->w.vol[j], c_ij = 2.0 * rhoi / (rhoi + p->rho[j]);
-    for (int d = 0; d < dim; d++) {
-      grad_chi[d] += fv * dx[d];
-      grad_c[d] += c_ij * fv * dx[d];
-    }
+    double fv = kernel_f(&e->kern, r2) * e->w.vol[j];
+    for (int d = 0; d < dim; d++) grad_chi[d] += fv * dx[d];
   }
   return pairs;
 }
@@ -66,14 +63,15 @@ static double renormalised_trace(int dim, const double *g, const double *b) {
   return tb > 0 ? dim * tg / tb : 0.0;
 }
 
-/* Normal and |grad c| of owned fluid particle i. */
+/* Normal and |grad chi| of owned fluid particle i. */
 static void interface_normal_of(struct engine *e, long i, const struct neighbours *nb) {
   const int dim = e->p.dim;
-  double grad_c[3], grad_chi[3];
-  e->pass_pairs += colour_gradients(e, i, nb, grad_c, grad_chi);
-  double g = norm_of(grad_c, dim), on = norm_of(grad_chi, dim) * e->h >= COLOUR_GRAD_MIN && g > 0;
+  double grad_chi[3];
+  e->pass_pairs += colour_gradient(e, i, nb, grad_chi);
+  double g = norm_of(grad_chi, dim);
+  int on = g * e->h >= COLOUR_GRAD_MIN;
   e->w.colour_grad[i] = on ? g : 0.0;
-  for (int d = 0; d < dim; d++) e->w.interface_normal[d][i] = on ? grad_c[d] / g : 0.0;
+  for (int d = 0; d < dim; d++) e->w.interface_normal[d][i] = on ? grad_chi[d] / g : 0.0;
 }
 
 /* Wall ghosts carry no interface normal. */
