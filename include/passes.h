@@ -14,6 +14,16 @@ struct neighbour_ranges {
 /** The particle ranges of the 3^dim cells around cell c (those present on this rank). */
 void neighbour_ranges(const struct space *s, long c, struct neighbour_ranges *r);
 
+/** The separation r_i - r_j of slots i and j into dx [m]; returns its squared length [m^2]. */
+static inline double pair_separation(const struct parts *p, int dim, long i, long j, double *dx) {
+  double r2 = 0;
+  for (int d = 0; d < dim; d++) {
+    dx[d] = p->x[d][i] - p->x[d][j];
+    r2 += dx[d] * dx[d];
+  }
+  return r2;
+}
+
 /** Work on owned particle i with its neighbour list (empty for wall ghosts). */
 typedef void (*particle_fn)(struct engine *e, long i, const struct neighbours *nb);
 

@@ -28,11 +28,7 @@ static long colour_gradient(const struct engine *e, long i, const struct neighbo
   for (int d = 0; d < dim; d++) grad_chi[d] = 0;
   for (int n = 0; n < nb->n; n++) {
     const long j = nb->j[n];
-    double dx[3], r2 = 0;
-    for (int d = 0; d < dim; d++) {
-      dx[d] = p->x[d][i] - p->x[d][j];
-      r2 += dx[d] * dx[d];
-    }
+    double dx[3], r2 = pair_separation(p, dim, i, j, dx);
     if (r2 >= e->kern.support2) continue;
     pairs++;
     if (p->phase[j] == ph || p->phase[j] == PHASE_WALL) continue;
@@ -97,12 +93,8 @@ static double curvature_of(const struct engine *e, long i, const struct neighbou
   for (int n = 0; n < nb->n; n++) {
     const long j = nb->j[n];
     if (p->phase[j] == PHASE_WALL) continue;
-    double dx[3], r2 = 0, phi = p->phase[j] == ph ? 1.0 : -1.0, nj2 = 0;
-    for (int d = 0; d < dim; d++) {
-      dx[d] = p->x[d][i] - p->x[d][j];
-      r2 += dx[d] * dx[d];
-      nj2 += nrm[d][j] * nrm[d][j];
-    }
+    double dx[3], r2 = pair_separation(p, dim, i, j, dx), phi = p->phase[j] == ph ? 1.0 : -1.0, nj2 = 0;
+    for (int d = 0; d < dim; d++) nj2 += nrm[d][j] * nrm[d][j];
     if (r2 >= e->kern.support2 || nj2 == 0) continue;
     (*pairs)++;
     double fv = kernel_f(&e->kern, r2) * e->w.vol[j];

@@ -49,14 +49,6 @@ static const char *case_text =
     "initial: {pressure: zero}\n"
     "output: {progress_interval: 1000}\n";
 
-/* A deterministic pseudo-random number in [-0.5, 0.5) from a particle id and a salt. */
-static double noise(int64_t id, int salt) {
-  uint64_t z = (uint64_t)id * 0x9E3779B97F4A7C15ull + (uint64_t)salt * 0xBF58476D1CE4E5B9ull;
-  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-  return (double)((z ^ (z >> 31)) >> 11) / 9007199254740992.0 - 0.5;
-}
-
 /* Particles on ring k, of radius (k + 1/2) dx: its perimeter over dx, rounded. */
 static int ring_count(int k) { return (int)lround(2 * M_PI_TEST * (k + 0.5)); }
 
@@ -97,7 +89,7 @@ static void evaluate_at_rest(struct engine *e, double jitter) {
     if (p->id[i] < n_heavy) ring_position(p->id[i], n_heavy, 0, k_drop, dx, x);
     else ring_position(p->id[i] - n_heavy, n_fluid - n_heavy, k_drop, k_out, dx, x);
     for (int d = 0; d < 2; d++) {
-      p->x[d][i] = x[d] + jitter * dx * noise(p->id[i], d);
+      p->x[d][i] = x[d] + jitter * dx * engine_test_noise(p->id[i], d);
       p->v[d][i] = 0;
     }
     p->rho[i] = e->c->phases[p->phase[i]].rho0;
@@ -170,22 +162,11 @@ static void check_perturbed(const struct engine *e) {
 
 int main(int argc, char **argv) {
   MPI_Init(&argc, &argv);
-  int rank;
-  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-  char dir[256] = "/tmp/mpsph-test-st-XXXXXX", path[300], out[300], err[512];
+  char dir[256] = "/tmp/mpsph-test-st-XXXXXX";
   if (engine_test_scratch(dir, sizeof dir)) return 1;
-  snprintf(path, sizeof path, "%s/case.yaml", dir);
-  snprintf(out, sizeof out, "%s/out", dir);
-  if (rank == 0) {
-    FILE *f = fopen(path, "w");
-    fputs(case_text, f);
-    fclose(f);
-  }
-  MPI_Barrier(MPI_COMM_WORLD);
   static struct case_def c;
   struct engine e;
-  CHECK(case_load(path, 0, NULL, &c, err, sizeof err) == 0, "case: %s", err);
-  CHECK(engine_init(&e, &c, out, NULL, MPI_COMM_WORLD) == 0, "engine_init");
+  if (engine_test_start(dir, case_text, &c, &e)) return check_report("test_surface_tension");
   CHECK(e.features & FEAT_SURFACE_TENSION, "surface tension in the pipeline");
   evaluate_at_rest(&e, 0.0);
   check_rings(&e);
