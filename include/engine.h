@@ -31,7 +31,7 @@ struct stage_op {
 
 /** Halo field sets (bit mask). */
 enum { HF_POS = 1, HF_VEL = 2, HF_RHO = 4, HF_P = 8, HF_MASS = 16, HF_GRAD_RHO = 32, HF_SHIFT = 64,
-       HF_DIV = 128, HF_SURFACE = 256, HF_RHO_SHEPARD = 512 };
+       HF_DIV = 128, HF_SURFACE = 256, HF_INTERFACE_NORMAL = 512, HF_RHO_SHEPARD = 1024 };
 
 /** Terms and passes a scene needs, decided once at start-up from the case. */
 enum {
@@ -43,7 +43,8 @@ enum {
   FEAT_TIC = 32,           /* tensile instability control */
   FEAT_SHARPNESS = 64,     /* interface sharpness force */
   FEAT_CENTRAL = 128,      /* quadratic potential body force */
-  FEAT_SHEPARD = 256       /* scheme delta-sph: same-phase Shepard density and the pressure from it */
+  FEAT_SURFACE_TENSION = 256,  /* CSF surface tension between the fluid phases */
+  FEAT_SHEPARD = 512       /* scheme delta-sph: same-phase Shepard density and the pressure from it */
 };
 
 /** Work arrays of the scheme, sized to the particle capacity; optional ones stay NULL when the
@@ -62,6 +63,10 @@ struct work {
   double *normal[3];               /* FEAT_SURFACE: outward unit normal */
   double *lambda;                  /* FEAT_SURFACE: smallest eigenvalue of the B matrix */
   double *rho_s;                   /* FEAT_SHEPARD: same-phase Shepard density [kg/m^3] */
+  double *interface_normal[3];     /* FEAT_SURFACE_TENSION: unit normal of the colour gradient,
+                                      toward the other phase; 0 off the interface band */
+  double *colour_grad;             /* FEAT_SURFACE_TENSION: |grad chi| on the band, else 0 [1/m] */
+  double *kappa_curvature;         /* FEAT_SURFACE_TENSION: div n, 0 off the band [1/m] */
 };
 
 struct engine {

@@ -14,6 +14,16 @@ struct neighbour_ranges {
 /** The particle ranges of the 3^dim cells around cell c (those present on this rank). */
 void neighbour_ranges(const struct space *s, long c, struct neighbour_ranges *r);
 
+/** The separation r_i - r_j of slots i and j into dx [m]; returns its squared length [m^2]. */
+static inline double pair_separation(const struct parts *p, int dim, long i, long j, double *dx) {
+  double r2 = 0;
+  for (int d = 0; d < dim; d++) {
+    dx[d] = p->x[d][i] - p->x[d][j];
+    r2 += dx[d] * dx[d];
+  }
+  return r2;
+}
+
 /** Work on owned particle i with its neighbour list (empty for wall ghosts). */
 typedef void (*particle_fn)(struct engine *e, long i, const struct neighbours *nb);
 
@@ -82,5 +92,15 @@ void shifting_velocity(struct engine *e, long i, const double *sum_gradw, int n_
  *  with tensile control, viscosity, delta-u term, acoustic damper, sharpness force, body forces)
  *  right-hand sides of owned fluid particles (paper 000 Eqs. 5-10, 16-20). */
 void pass_fluid_rhs(struct engine *e);
+
+/** Surface tension, first pass: the colour gradient over the fluid neighbours of the other
+ *  phases, its magnitude [1/m] and unit normal of owned fluid particles (both 0 where the
+ *  gradient is below 0.01/h); 0 for wall ghosts. */
+void pass_interface_normals(struct engine *e);
+
+/** Surface tension, second pass (after pass_fluid_rhs, the normals halo-updated): curvature
+ *  kappa = div n (renormalised divergence) [1/m] and the CSF acceleration
+ *  -sigma kappa n |grad chi| / rho added to du/dt of owned fluid particles (Brackbill et al. 1992). */
+void pass_surface_tension(struct engine *e);
 
 #endif

@@ -59,7 +59,7 @@ static const char *const PHYSICS_KEYS[] = {"delta", "artificial_viscosity", "aco
                                            "shifting", "u_max", "tensile_control", "free_surface",
                                            "surface_band", "interface_mode", "damper_form",
                                            "interface_sharpness", "limit_surface_shifting",
-                                           "interface_pressure", NULL};
+                                           "interface_pressure", "surface_tension", NULL};
 static const char *const INITIAL_KEYS[] = {"pressure", NULL};
 static const char *const PROBE_KEYS[] = {"name", "kind", "position", "diameter", "axis",
                                          "interpolation", "phase", NULL};
@@ -811,7 +811,8 @@ static int read_physics(const struct map *root, struct case_def *c) {
       choice(&ph, "damper_form", DAMPER_NAMES, DAMPER_SYMMETRIC, &form) ||
       num(&ph, "interface_sharpness", &R_NONNEGATIVE, 0, &c->interface_sharpness) ||
       choice(&ph, "limit_surface_shifting", BOOL_NAMES, 0, &limit) ||
-      choice(&ph, "interface_pressure", IFACE_P_NAMES, IFACE_P_SUM, &iface_p))
+      choice(&ph, "interface_pressure", IFACE_P_NAMES, IFACE_P_SUM, &iface_p) ||
+      num(&ph, "surface_tension", &R_NONNEGATIVE, 0, &c->surface_tension))
     return 1;
   c->shifting = (enum shifting_kind)shifting;
   c->tensile_control = tic;
@@ -1167,6 +1168,7 @@ static void put_tail(FILE *f, const struct case_def *c) {
   put_num(f, "  ", "interface_sharpness", c->interface_sharpness);
   put_word(f, "  ", "limit_surface_shifting", BOOL_NAMES[c->limit_surface_shifting != 0]);
   put_word(f, "  ", "interface_pressure", IFACE_P_NAMES[c->interface_pressure]);
+  put_num(f, "  ", "surface_tension", c->surface_tension);
   fputs("initial:\n", f);
   put_word(f, "  ", "pressure", PRESSURE_NAMES[c->initial_pressure]);
   put_list_key(f, "probes", c->n_probes);

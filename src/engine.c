@@ -327,7 +327,10 @@ void engine_free(struct engine *e) {
     free(e->w.v0[d]);
     free(e->w.sum_x[d]);
     free(e->w.sum_v[d]);
+    free(e->w.interface_normal[d]);
   }
+  free(e->w.colour_grad);
+  free(e->w.kappa_curvature);
   free(e->w.vol);
   free(e->w.div);
   free(e->w.drho);

@@ -19,7 +19,8 @@ static double *grow_if(double *a, long n, int on) { return on ? grow(a, n) : a; 
 /* 1 if an optional array of a feature that is on has not been allocated yet. */
 static int optional_missing(const struct engine *e) {
   return ((e->features & FEAT_SHIFT) && !e->w.du[0]) || ((e->features & FEAT_SURFACE) && !e->w.surface) ||
-         ((e->features & FEAT_SHEPARD) && !e->w.rho_s);
+         ((e->features & FEAT_SHEPARD) && !e->w.rho_s) ||
+         ((e->features & FEAT_SURFACE_TENSION) && !e->w.colour_grad);
 }
 
 void engine_work_reserve(struct engine *e) {
@@ -36,6 +37,7 @@ void engine_work_reserve(struct engine *e) {
     w->sum_v[d] = grow(w->sum_v[d], n);
     w->du[d] = grow_if(w->du[d], n, f & FEAT_SHIFT);
     w->normal[d] = grow_if(w->normal[d], n, f & FEAT_SURFACE);
+    w->interface_normal[d] = grow_if(w->interface_normal[d], n, f & FEAT_SURFACE_TENSION);
   }
   w->vol = grow(w->vol, n);
   w->div = grow(w->div, n);
@@ -46,6 +48,8 @@ void engine_work_reserve(struct engine *e) {
   w->region = grow_if(w->region, n, f & FEAT_SURFACE);
   w->lambda = grow_if(w->lambda, n, f & FEAT_SURFACE);
   w->rho_s = grow_if(w->rho_s, n, f & FEAT_SHEPARD);
+  w->colour_grad = grow_if(w->colour_grad, n, f & FEAT_SURFACE_TENSION);
+  w->kappa_curvature = grow_if(w->kappa_curvature, n, f & FEAT_SURFACE_TENSION);
   w->capacity = n;
 }
 
@@ -58,6 +62,7 @@ static int halo_field_list(struct engine *e, int mask, double **f) {
     if (mask & HF_VEL) f[n++] = p->v[d];
     if (mask & HF_GRAD_RHO) f[n++] = e->w.grad_rho[d];
     if (mask & HF_SHIFT) f[n++] = e->w.du[d];
+    if (mask & HF_INTERFACE_NORMAL) f[n++] = e->w.interface_normal[d];
   }
   if (mask & HF_RHO) f[n++] = p->rho;
   if (mask & HF_P) f[n++] = p->p;
@@ -90,6 +95,7 @@ static unsigned case_features(const struct engine *e) {
   if (c->interface_sharpness > 0 && c->n_phases > 1) f |= FEAT_SHARPNESS;
   if (c->potential_omega > 0) f |= FEAT_CENTRAL;
   if (c->scheme == SCHEME_DELTA_SPH) f |= FEAT_SHEPARD;
+  if (c->surface_tension > 0 && c->n_phases > 1) f |= FEAT_SURFACE_TENSION;
   return f;
 }
 
@@ -152,6 +158,11 @@ void engine_assemble(struct engine *e) {
   add_op(e, "halo: gradient-pass results", NULL,
          HF_GRAD_RHO | ((f & FEAT_SHIFT) ? HF_SHIFT : 0) | ((f & FEAT_DAMPER) ? HF_DIV : 0), 0);
   add_op(e, "fluid rhs: continuity and momentum", pass_fluid_rhs, 0, 0);
+  if (f & FEAT_SURFACE_TENSION) {
+    add_op(e, "surface tension: colour gradient, interface normals", pass_interface_normals, 0, 0);
+    add_op(e, "halo: interface normals", NULL, HF_INTERFACE_NORMAL, 0);
+    add_op(e, "surface tension: curvature, CSF force", pass_surface_tension, 0, 0);
+  }
   carry_op_totals(e, old, n_old);
   engine_work_reserve(e);
 }
@@ -160,10 +171,11 @@ void engine_assemble(struct engine *e) {
 void engine_print_pipeline(const struct engine *e) {
   static const char *names[] = {"wall ghosts", "shifting", "delta-u terms", "acoustic damper",
                                 "free-surface detection", "tensile instability control",
-                                "interface sharpness", "quadratic potential", "Shepard density"};
+                                "interface sharpness", "quadratic potential", "surface tension",
+                                "Shepard density"};
   if (e->rank) return;
   printf("terms:");
-  for (int k = 0; k < 9; k++)
+  for (int k = 0; k < (int)(sizeof names / sizeof names[0]); k++)
     if (e->features & (1u << k)) printf(" [%s]", names[k]);
   printf("\npipeline per RK stage (%d operations):\n", e->n_ops);
   for (int k = 0; k < e->n_ops; k++) printf("  %d. %s\n", k + 1, e->ops[k].name);
@@ -256,6 +268,14 @@ static void limit_by(double *dt, const char **limit, double candidate, const cha
   }
 }
 
+/* The capillary time-step limit 0.25 (rho_min h^3 / (2 pi sigma))^(1/2), rho_min the smallest
+ * rho0 of the phases (Brackbill et al. 1992; Adami et al. 2010) [s]. */
+static double capillary_step(const struct engine *e) {
+  double rho_min = INFINITY;
+  for (int ph = 0; ph < e->c->n_phases; ph++) rho_min = fmin(rho_min, e->c->phases[ph].rho0);
+  return 0.25 * sqrt(rho_min * e->h * e->h * e->h / (2.0 * 3.14159265358979323846 * e->c->surface_tension));
+}
+
 /* Global time step of paper 000 Eq. 12: acoustic (with c_stab), acceleration, viscous, damper,
  * and the motion limit of the cell skin; *limit names the smallest term. Not yet cut to
  * time.end. */
@@ -275,6 +295,7 @@ static double time_step(struct engine *e, const char **limit) {
     if ((e->features & FEAT_DAMPER) && f->incompressible)
       limit_by(&dt, limit, c->cfl * e->h / (c->acoustic_damper * f->c0), "acoustic damper");
   }
+  if (e->features & FEAT_SURFACE_TENSION) limit_by(&dt, limit, capillary_step(e), "capillary");
   return dt;
 }
 

@@ -25,11 +25,7 @@ static void moments(const struct engine *e, long i, const struct neighbours *nb,
   for (int d = 0; d < 3; d++) sum_gw[d] = 0;
   for (int n = 0; n < nb->n; n++) {
     const long j = nb->j[n];
-    double dx[3], r2 = 0;
-    for (int d = 0; d < dim; d++) {
-      dx[d] = p->x[d][i] - p->x[d][j];
-      r2 += dx[d] * dx[d];
-    }
+    double dx[3], r2 = pair_separation(p, dim, i, j, dx);
     if (r2 >= e->kern.support2) continue;
     double fv = kernel_f(&e->kern, r2) * e->w.vol[j];
     for (int a = 0; a < dim; a++) {

@@ -57,6 +57,8 @@ refuses type-word 'kernel: got .cubic., allowed values: gaussian, wendland-c2' -
 refuses dx-zero 'resolution\.dx: got .0., expected a number > 0' -- run dx-zero --set resolution.dx=0
 refuses dx-negative 'resolution\.dx: got .-1., expected a number > 0' -- \
   run dx-negative --set resolution.dx=-1
+refuses sigma-negative 'physics\.surface_tension: got .-0\.07., expected a number >= 0' -- \
+  run sigma-negative --set physics.surface_tension=-0.07
 refuses h-large 'resolution\.h_over_dx: got .20., expected a number > 0 and <= 10' -- \
   run h-large --set resolution.h_over_dx=20
 refuses band 'phases\.0\.density_band: got \[1\.1, 2\], expected a list \[min_ratio, max_ratio\]' -- \

@@ -1,12 +1,15 @@
 /* engine_test.h — set-up and tear-down shared by the C tests that run an engine on MPI ranks:
- * a scratch folder made on rank 0 and known to all, and the end of such a test (free the
- * engine, remove the folder, agree on the verdict, finalise MPI). Include after check.h. */
+ * a scratch folder made on rank 0 and known to all, an engine started from a case text, a
+ * rank-independent pseudo-random field, and the end of such a test (free the engine, remove the
+ * folder, agree on the verdict, finalise MPI). Include after check.h. */
 #ifndef MPSPH_TEST_ENGINE_TEST_H
 #define MPSPH_TEST_ENGINE_TEST_H
 
 #include <mpi.h>
+#include <stdint.h>
 #include <stdlib.h>
 #include <unistd.h>
+#include "case_load.h"
 #include "engine.h"
 
 /** Rank 0 creates the folder from the mkdtemp template dir (len bytes) and every rank receives
@@ -18,6 +21,36 @@ static inline int engine_test_scratch(char *dir, int len) {
   MPI_Bcast(&ok, 1, MPI_INT, 0, MPI_COMM_WORLD);
   MPI_Bcast(dir, len, MPI_CHAR, 0, MPI_COMM_WORLD);
   return !ok;
+}
+
+/** Rank 0 writes case_text to dir/case.yaml; every rank loads it into *c and starts engine e
+ *  with its output in dir/out. Returns 0, or 1 after a failed check. Collective. */
+static inline int engine_test_start(const char *dir, const char *case_text, struct case_def *c,
+                                    struct engine *e) {
+  char path[300], out[300], err[512];
+  int rank;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  snprintf(path, sizeof path, "%s/case.yaml", dir);
+  snprintf(out, sizeof out, "%s/out", dir);
+  if (rank == 0) {
+    FILE *f = fopen(path, "w");
+    fputs(case_text, f);
+    fclose(f);
+  }
+  MPI_Barrier(MPI_COMM_WORLD);
+  CHECK(case_load(path, 0, NULL, c, err, sizeof err) == 0, "case: %s", err);
+  if (check_failures) return 1;
+  CHECK(engine_init(e, c, out, NULL, MPI_COMM_WORLD) == 0, "engine_init");
+  return check_failures != 0;
+}
+
+/** A deterministic pseudo-random number in [-0.5, 0.5) from a particle id and a salt, so that
+ *  a field made from it is the same on any number of ranks. */
+static inline double engine_test_noise(int64_t id, int salt) {
+  uint64_t z = (uint64_t)id * 0x9E3779B97F4A7C15ull + (uint64_t)salt * 0xBF58476D1CE4E5B9ull;
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+  return (double)((z ^ (z >> 31)) >> 11) / 9007199254740992.0 - 0.5;
 }
 
 /** Close and free engine e, remove the scratch folder dir, print the summary line of test name

@@ -96,7 +96,8 @@ static void test_defaults(void) {
   CHECK(c.u_max == c.phases[0].c0 / 10, "u_max default: liquid c0 / 10 (%g)", c.u_max);
   CHECK(c.tensile_control == 1 && c.free_surface == FREE_SURFACE_AUTO && c.surface_band == 2 &&
         c.interface_mode == 4 && c.damper_form == DAMPER_SYMMETRIC && c.interface_sharpness == 0 &&
-        c.limit_surface_shifting == 0 && c.potential_omega == 0, "delta-plus defaults");
+        c.limit_surface_shifting == 0 && c.potential_omega == 0 &&
+        c.surface_tension == 0, "delta-plus defaults");
   CHECK(c.initial_pressure == INIT_PRESSURE_HYDROSTATIC, "initial pressure");
   CHECK_CLOSE(c.repartition_threshold, 0.1, 0, "repartition_threshold");
   CHECK(c.repartition_every == 0 && c.max_steps == 0, "counts");

@@ -39,14 +39,6 @@ static const char *case_text =
 
 static const double slope[2] = {0.011, -0.017};   /* relative density gradient [1/m] */
 
-/* A deterministic pseudo-random number in [-0.5, 0.5) from a particle id and a salt. */
-static double noise(int64_t id, int salt) {
-  uint64_t z = (uint64_t)id * 0x9E3779B97F4A7C15ull + (uint64_t)salt * 0xBF58476D1CE4E5B9ull;
-  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-  return (double)((z ^ (z >> 31)) >> 11) / 9007199254740992.0 - 0.5;
-}
-
 /* Field k: 0 uniform on a perturbed lattice, 1 linear on the lattice, 2 uniform with random
  * velocities. Masses m = rho dx^2, so the volumes are dx^2. */
 static void set_fields(struct engine *e, int k) {
@@ -56,9 +48,9 @@ static void set_fields(struct engine *e, int k) {
     if (p->phase[i] == PHASE_WALL) continue;
     double lin = 1.0;
     for (int d = 0; d < 2; d++) {
-      if (k == 0) p->x[d][i] += 0.3 * dx * noise(p->id[i], d);
+      if (k == 0) p->x[d][i] += 0.3 * dx * engine_test_noise(p->id[i], d);
       if (k == 1) lin += slope[d] * p->x[d][i];
-      p->v[d][i] = k == 2 ? noise(p->id[i], 10 + d) : 0.0;
+      p->v[d][i] = k == 2 ? engine_test_noise(p->id[i], 10 + d) : 0.0;
     }
     p->rho[i] = e->c->phases[p->phase[i]].rho0 * lin;
     p->m[i] = p->rho[i] * dx * dx;
@@ -112,20 +104,11 @@ int main(int argc, char **argv) {
   MPI_Init(&argc, &argv);
   int rank;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-  char dir[256] = "/tmp/mpsph-test-dsph-XXXXXX", path[300], out[300], err[512];
+  char dir[256] = "/tmp/mpsph-test-dsph-XXXXXX";
   if (engine_test_scratch(dir, sizeof dir)) return 1;
-  snprintf(path, sizeof path, "%s/case.yaml", dir);
-  snprintf(out, sizeof out, "%s/out", dir);
-  if (rank == 0) {
-    FILE *f = fopen(path, "w");
-    fputs(case_text, f);
-    fclose(f);
-  }
-  MPI_Barrier(MPI_COMM_WORLD);
   static struct case_def c;
   struct engine e;
-  CHECK(case_load(path, 0, NULL, &c, err, sizeof err) == 0, "case: %s", err);
-  CHECK(engine_init(&e, &c, out, NULL, MPI_COMM_WORLD) == 0, "engine_init");
+  if (engine_test_start(dir, case_text, &c, &e)) return check_report("test_delta_sph");
   CHECK(e.features & FEAT_SHEPARD && !(e.features & (FEAT_SHIFT | FEAT_TIC | FEAT_DAMPER)),
         "delta-sph pipeline: Shepard density, no shifting, tensile control or damper");
   double rho_err, drho_err;

@@ -82,20 +82,11 @@ int main(int argc, char **argv) {
   MPI_Init(&argc, &argv);
   int rank;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-  char dir[256] = "/tmp/mpsph-test-iface-XXXXXX", path[300], out[300], err[512];
+  char dir[256] = "/tmp/mpsph-test-iface-XXXXXX";
   if (engine_test_scratch(dir, sizeof dir)) return 1;
-  snprintf(path, sizeof path, "%s/case.yaml", dir);
-  snprintf(out, sizeof out, "%s/out", dir);
-  if (rank == 0) {
-    FILE *f = fopen(path, "w");
-    fputs(case_text, f);
-    fclose(f);
-  }
-  MPI_Barrier(MPI_COMM_WORLD);
   static struct case_def c;
   struct engine e;
-  CHECK(case_load(path, 0, NULL, &c, err, sizeof err) == 0, "case: %s", err);
-  CHECK(engine_init(&e, &c, out, NULL, MPI_COMM_WORLD) == 0, "engine_init");
+  if (engine_test_start(dir, case_text, &c, &e)) return check_report("test_interface_pressure");
   double dx = c.dx;
   evaluate(&e, &c, IFACE_P_SUM);
   double a_sum = max_acceleration(&e, 1, dx);

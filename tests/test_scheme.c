@@ -36,15 +36,6 @@ static const char *case_text =
 
 static const double slope[2] = {0.013, -0.021};   /* relative density gradient [1/m] */
 
-/* A deterministic pseudo-random number in [-0.5, 0.5) from a particle id and a salt, so that the
- * field is the same on any number of ranks. */
-static double noise(int64_t id, int salt) {
-  uint64_t z = (uint64_t)id * 0x9E3779B97F4A7C15ull + (uint64_t)salt * 0xBF58476D1CE4E5B9ull;
-  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-  return (double)((z ^ (z >> 31)) >> 11) / 9007199254740992.0 - 0.5;
-}
-
 /* Perturb positions by up to 0.3 dx and set rho = rho0 (1 + slope.x) (+ noise if noisy), random u. */
 static void set_fields(struct engine *e, int noisy) {
   struct parts *p = &e->p;
@@ -53,11 +44,11 @@ static void set_fields(struct engine *e, int noisy) {
     const struct phase *ph = &e->c->phases[p->phase[i]];
     double lin = 1.0;
     for (int d = 0; d < 2; d++) {
-      if (!noisy) p->x[d][i] += 0.3 * e->c->dx * noise(p->id[i], d);
+      if (!noisy) p->x[d][i] += 0.3 * e->c->dx * engine_test_noise(p->id[i], d);
       lin += slope[d] * p->x[d][i];
-      p->v[d][i] = noisy ? noise(p->id[i], 10 + d) : 0.0;
+      p->v[d][i] = noisy ? engine_test_noise(p->id[i], 10 + d) : 0.0;
     }
-    p->rho[i] = ph->rho0 * (lin + (noisy ? 0.01 * noise(p->id[i], 20) : 0.0));
+    p->rho[i] = ph->rho0 * (lin + (noisy ? 0.01 * engine_test_noise(p->id[i], 20) : 0.0));
     p->p[i] = eos_pressure(ph, p->rho[i]);
   }
 }
@@ -109,22 +100,11 @@ static void check_momentum(struct engine *e) {
 
 int main(int argc, char **argv) {
   MPI_Init(&argc, &argv);
-  int rank;
-  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-  char dir[256] = "/tmp/mpsph-test-scheme-XXXXXX", path[300], out[300], err[512];
+  char dir[256] = "/tmp/mpsph-test-scheme-XXXXXX";
   if (engine_test_scratch(dir, sizeof dir)) return 1;
-  snprintf(path, sizeof path, "%s/case.yaml", dir);
-  snprintf(out, sizeof out, "%s/out", dir);
-  if (rank == 0) {
-    FILE *f = fopen(path, "w");
-    fputs(case_text, f);
-    fclose(f);
-  }
-  MPI_Barrier(MPI_COMM_WORLD);
   static struct case_def c;
   struct engine e;
-  CHECK(case_load(path, 0, NULL, &c, err, sizeof err) == 0, "case: %s", err);
-  CHECK(engine_init(&e, &c, out, NULL, MPI_COMM_WORLD) == 0, "engine_init");
+  if (engine_test_start(dir, case_text, &c, &e)) return check_report("test_scheme");
   for (int noisy = 0; noisy <= 1; noisy++) {
     set_fields(&e, noisy);
     CHECK(engine_rebuild(&e) == 0, "rebuild");
