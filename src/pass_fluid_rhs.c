@@ -83,10 +83,9 @@ static inline __attribute__((always_inline)) void fluid_sums(const struct engine
     n_pairs++;
     const double fv = kernel_f(&e->kern, r2) * vol[j];
     const int rel = phase[j] == PHASE_WALL ? PAIR_WALL : (!PHASES || phase[j] == ph) ? PAIR_SAME : PAIR_OTHER;
-    /* other phase: a fluid particle of another phase, or a ghost standing for a heavier one (a
-     * wall then acts on a light particle with about its own pressure; on a heavy particle beside
-     * ghosts of a light phase it keeps the pair sum, so the wall still stops it) */
-    const int other = PHASES && (rel == PAIR_OTHER || (rel == PAIR_WALL && rho[j] > rho0i));
+    /* other phase: a fluid particle of another phase, or a ghost standing for one (rho0 of
+     * another phase), so that fluid and ghost neighbours of a phase act alike */
+    const int other = PHASES && (rel == PAIR_OTHER || (rel == PAIR_WALL && rho[j] != rho0i));
     double pj = weighted && other ? other_phase_pressure(pi, rhoi, pres[j], rho[j]) : pres[j];
     double psum = pj + p_sign * pi;
     for (int d = 0; d < dim; d++) s.grad_p[d] += psum * fv * dx[d];
