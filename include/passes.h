@@ -4,16 +4,6 @@
 
 #include "engine.h"
 
-/** Ranges of particle slots of the cells around one cell, in global cell order. */
-struct neighbour_ranges {
-  int n;
-  long start[27];
-  int count[27];
-};
-
-/** The particle ranges of the 3^dim cells around cell c (those present on this rank). */
-void neighbour_ranges(const struct space *s, long c, struct neighbour_ranges *r);
-
 /** Work on owned particle i with its neighbour list (empty for wall ghosts). */
 typedef void (*particle_fn)(struct engine *e, long i, const struct neighbours *nb);
 

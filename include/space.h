@@ -21,6 +21,16 @@ struct space {
   long scratch_capacity;
 };
 
+/** Ranges of particle slots of the cells around one cell, in global cell order. */
+struct neighbour_ranges {
+  int n;
+  long start[27];
+  int count[27];
+};
+
+/** The particle ranges of the 3^dim cells around cell c (those present on this rank). */
+void neighbour_ranges(const struct space *s, long c, struct neighbour_ranges *r);
+
 /** Set up the space over grid g for `rank` of `n_ranks`, with `halo_layers` cell layers. */
 void space_init(struct space *s, const struct grid *g, int rank, int n_ranks, int halo_layers);
 
