@@ -31,6 +31,9 @@ struct neighbour_ranges {
 /** The particle ranges of the 3^dim cells around cell c (those present on this rank). */
 void neighbour_ranges(const struct space *s, long c, struct neighbour_ranges *r);
 
+/** Bytes held by the space's arrays (per-cell index and ownership, sort scratch). */
+long space_bytes(const struct space *s);
+
 /** Set up the space over grid g for `rank` of `n_ranks`, with `halo_layers` cell layers. */
 void space_init(struct space *s, const struct grid *g, int rank, int n_ranks, int halo_layers);
 

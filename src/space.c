@@ -33,6 +33,11 @@ void space_free(struct space *s) {
   memset(s, 0, sizeof(*s));
 }
 
+long space_bytes(const struct space *s) {
+  long per_cell = 2 * (long)sizeof(int) + 3 * (long)sizeof(long);   /* owner, count; start, owned, bucket */
+  return s->grid.n_cells * per_cell + s->scratch_capacity * (long)(sizeof(long) + sizeof(double));
+}
+
 void space_set_owner(struct space *s, const int *owner) {
   memcpy(s->owner, owner, s->grid.n_cells * sizeof(int));
   s->n_owned_cells = 0;
