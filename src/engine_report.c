@@ -23,6 +23,19 @@ static double current_rss_bytes(void) {
   return (double)pages_resident * (double)sysconf(_SC_PAGESIZE);
 }
 
+/* File-backed resident memory of this process [bytes]: the pages of the executable and the shared
+ * libraries (MPI, HDF5, ...), which every rank maps (RssFile of /proc/self/status; 0 where it is
+ * missing). */
+static double current_file_rss_bytes(void) {
+  char line[256];
+  double kb = 0;
+  FILE *f = fopen("/proc/self/status", "r");
+  while (f && fgets(line, sizeof line, f))
+    if (sscanf(line, "RssFile: %lf kB", &kb) == 1) break;
+  if (f) fclose(f);
+  return kb * 1024.0;
+}
+
 void engine_global_counts(const struct engine *e, double *n_fluid, double *n_wall) {
   double local[2] = {0, 0}, total[2];
   for (long i = 0; i < e->p.n_owned; i++) local[e->p.phase[i] == PHASE_WALL]++;
@@ -48,6 +61,8 @@ static void project_bytes(struct engine *e, double *bytes) {
   bytes[MEM_HALO] = (double)halo_bytes(&e->halo);
 }
 
+#define PER_RANK 4   /* memory figures gathered from each rank */
+
 /* Everything the summary reports, reduced over the ranks (memory gathered to rank 0). */
 struct run_summary {
   const struct engine *e;
@@ -55,7 +70,7 @@ struct run_summary {
   double loop_seconds, n_fluid, n_wall;
   double op_max[ENGINE_MAX_OPS], op_mean[ENGINE_MAX_OPS], op_pairs[ENGINE_MAX_OPS];
   double migrate_max, migrate_mean, output_max, steps_max, dropped_max, dropped_mean, cpu_max, cpu_mean;
-  double *per_rank;                /* peak and current RSS, project bytes per rank, interleaved; rank 0 only [bytes] */
+  double *per_rank;                /* per rank: peak RSS, current RSS, its file-backed part, project bytes; rank 0 only [bytes] */
   double mem_sum[N_MEM];           /* the project's arrays by owner, summed over the ranks [bytes] */
   double halo_particles;           /* halo copies summed over the ranks */
 };
@@ -68,9 +83,9 @@ static void max_mean(const struct engine *e, double x, double *max, double *mean
 }
 
 static void summarise(struct engine *e, long steps, double loop_seconds, struct run_summary *s) {
-  double rss[3] = {peak_rss_bytes(), current_rss_bytes(), 0}, *all = NULL, mem[N_MEM];
+  double rss[PER_RANK] = {peak_rss_bytes(), current_rss_bytes(), current_file_rss_bytes(), 0}, *all = NULL, mem[N_MEM];
   project_bytes(e, mem);
-  for (int k = 0; k < N_MEM; k++) rss[2] += mem[k];
+  for (int k = 0; k < N_MEM; k++) rss[3] += mem[k];
   MPI_Reduce(mem, s->mem_sum, N_MEM, MPI_DOUBLE, MPI_SUM, 0, e->comm);
   double halo = (double)e->p.n_halo;
   MPI_Reduce(&halo, &s->halo_particles, 1, MPI_DOUBLE, MPI_SUM, 0, e->comm);
@@ -88,8 +103,8 @@ static void summarise(struct engine *e, long steps, double loop_seconds, struct 
   s->output_max = max_over_ranks(e, e->t_output);
   s->steps_max = max_over_ranks(e, e->t_steps);
   max_mean(e, e->t_steps_cpu, &s->cpu_max, &s->cpu_mean);
-  if (e->rank == 0) all = malloc(3 * (size_t)e->n_ranks * sizeof(double));
-  MPI_Gather(rss, 3, MPI_DOUBLE, all, 3, MPI_DOUBLE, 0, e->comm);
+  if (e->rank == 0) all = malloc(PER_RANK * (size_t)e->n_ranks * sizeof(double));
+  MPI_Gather(rss, PER_RANK, MPI_DOUBLE, all, PER_RANK, MPI_DOUBLE, 0, e->comm);
   s->per_rank = all;
 }
 
@@ -111,9 +126,11 @@ static void write_rows(FILE *f, const void *ctx) {
   fprintf(f, "output,time,,%.6f,,\n", s->output_max);
   fprintf(f, "dropped_operations,time,,%.6f,%.6f,\n", s->dropped_max, s->dropped_mean);
   fprintf(f, "halo_particles,run,%.0f,,,\n", s->halo_particles);
-  for (int r = 0; r < e->n_ranks; r++)
-    fprintf(f, "rss_peak_rank%d,memory,%.0f,,,\nrss_end_rank%d,memory,%.0f,,,\nproject_bytes_rank%d,memory,%.0f,,,\n",
-            r, s->per_rank[3 * r], r, s->per_rank[3 * r + 1], r, s->per_rank[3 * r + 2]);
+  for (int r = 0; r < e->n_ranks; r++) {
+    const double *m = s->per_rank + PER_RANK * r;
+    fprintf(f, "rss_peak_rank%d,memory,%.0f,,,\nrss_end_rank%d,memory,%.0f,,,\n", r, m[0], r, m[1]);
+    fprintf(f, "rss_file_end_rank%d,memory,%.0f,,,\nproject_bytes_rank%d,memory,%.0f,,,\n", r, m[2], r, m[3]);
+  }
   for (int k = 0; k < N_MEM; k++) fprintf(f, "bytes_%s,memory,%.0f,,,\n", mem_names[k], s->mem_sum[k]);
 }
 
@@ -127,9 +144,10 @@ static void print_summary(const struct engine *e, const struct run_summary *s) {
   double rate = s->steps > 0 && s->loop_seconds > 0 ? s->n_fluid * (double)s->steps / s->loop_seconds : 0;
   double rss_max = 0, rss_sum = 0, own = 0, n = s->n_fluid + s->n_wall;
   for (int r = 0; r < e->n_ranks; r++) {
-    rss_max = rss_max > s->per_rank[3 * r] ? rss_max : s->per_rank[3 * r];
-    rss_sum += s->per_rank[3 * r];
-    own += s->per_rank[3 * r + 2];
+    const double *m = s->per_rank + PER_RANK * r;
+    rss_max = rss_max > m[0] ? rss_max : m[0];
+    rss_sum += m[0];
+    own += m[3];
   }
   printf("summary: %ld steps in %.2f s on %d ranks; %.0f fluid + %.0f wall particles\n", s->steps,
          s->loop_seconds, e->n_ranks, s->n_fluid, s->n_wall);
