@@ -10,8 +10,9 @@
 
 /** The candidates of a particle are the slots of the cells around its cell (space.h
  *  neighbour_ranges), concatenated in global cell order then slot order; its list is a bit mask
- *  over them, bit b set when candidate b lies within the build radius. All particles of a cell
- *  have masks of the same length, stored one after the other, so a mask costs
+ *  over them, bit b set when candidate b lies within the build radius. All fluid particles of a
+ *  cell have masks of the same length, stored one after the other in slot order (wall ghosts
+ *  have none), so a mask costs
  *  ceil(candidates / 64) words instead of 4 bytes per neighbour, and reading it back yields the
  *  neighbours in the same fixed global order on any rank count. */
 struct nlist_cell {
@@ -38,10 +39,10 @@ struct neighbours {
  *  they are too small. */
 void nlist_build(struct nlist *l, const struct space *s, const struct parts *p, double radius);
 
-/** The neighbours of owned fluid slot i, which lies in owned cell number k (s->owned_cells[k])
- *  whose stencil ranges are r, as of the last build. The slots are valid until the next call. */
-struct neighbours nlist_of(struct nlist *l, const struct space *s, long k,
-                           const struct neighbour_ranges *r, long i);
+/** The neighbours of the f-th fluid particle (counted from 0 in slot order) of owned cell number
+ *  k (s->owned_cells[k]) whose stencil ranges are r, as of the last build. The slots are valid
+ *  until the next call. */
+struct neighbours nlist_of(struct nlist *l, long k, const struct neighbour_ranges *r, long f);
 
 /** Free the arrays. */
 void nlist_free(struct nlist *l);

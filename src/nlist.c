@@ -28,16 +28,22 @@ static void mark_neighbours(const struct nlist *l, const struct parts *p, long i
     }
 }
 
-/* Size the masks of owned cell k (cell c, stencil ranges r) from word n on; returns the words
- * they take. */
-static long place_cell(struct nlist *l, const struct space *s, long k, long c,
-                       const struct neighbour_ranges *r, long n) {
+/* Fluid particles of cell c. */
+static long fluid_in_cell(const struct space *s, const struct parts *p, long c) {
+  long n = 0;
+  for (long i = s->cell_start[c]; i < s->cell_start[c] + s->cell_count[c]; i++) n += p->phase[i] != PHASE_WALL;
+  return n;
+}
+
+/* Place the masks of the n_fluid fluid particles of owned cell k (stencil ranges r) from word n
+ * on; returns the words they take. */
+static long place_cell(struct nlist *l, long k, const struct neighbour_ranges *r, long n_fluid, long n) {
   long candidates = 0;
   for (int q = 0; q < r->n; q++) candidates += r->count[q];
   int words = (int)((candidates + WORD_BITS - 1) / WORD_BITS);
   l->decoded = grow(l->decoded, &l->decoded_capacity, candidates, sizeof(int));
   l->cells[k] = (struct nlist_cell){n, words};
-  return words * (long)s->cell_count[c];
+  return words * n_fluid;
 }
 
 void nlist_build(struct nlist *l, const struct space *s, const struct parts *p, double radius) {
@@ -48,18 +54,20 @@ void nlist_build(struct nlist *l, const struct space *s, const struct parts *p, 
     long c = s->owned_cells[k], first = s->cell_start[c];
     struct neighbour_ranges r;
     neighbour_ranges(s, c, &r);
-    long words = place_cell(l, s, k, c, &r, n);
+    long words = place_cell(l, k, &r, fluid_in_cell(s, p, c), n);
     l->bits = grow(l->bits, &l->capacity, n + words, sizeof(uint64_t));
     memset(l->bits + n, 0, words * sizeof(uint64_t));
-    for (long i = first; i < first + s->cell_count[c]; i++, n += l->cells[k].words)
-      if (p->phase[i] != PHASE_WALL) mark_neighbours(l, p, i, &r, l->bits + n);
+    for (long i = first; i < first + s->cell_count[c]; i++) {
+      if (p->phase[i] == PHASE_WALL) continue;
+      mark_neighbours(l, p, i, &r, l->bits + n);
+      n += l->cells[k].words;
+    }
   }
 }
 
-struct neighbours nlist_of(struct nlist *l, const struct space *s, long k,
-                           const struct neighbour_ranges *r, long i) {
+struct neighbours nlist_of(struct nlist *l, long k, const struct neighbour_ranges *r, long f) {
   const int words = l->cells[k].words;
-  const uint64_t *mask = l->bits + l->cells[k].first_word + (i - s->cell_start[s->owned_cells[k]]) * words;
+  const uint64_t *mask = l->bits + l->cells[k].first_word + f * words;
   int *out = l->decoded, n = 0, q = 0;
   long base = 0;   /* first candidate of range q */
   for (int w = 0; w < words; w++)

@@ -10,12 +10,15 @@ void pass_for_each_owned(struct engine *e, particle_fn fluid, particle_fn wall) 
     if (!s->cell_count[c]) continue;
     struct neighbour_ranges r;
     neighbour_ranges(s, c, &r);
+    long f = 0;   /* fluid particles of the cell before slot i */
     for (long i = first; i < first + s->cell_count[c]; i++) {
       int is_wall = p->phase[i] == PHASE_WALL;
       particle_fn fn = is_wall ? wall : fluid;
-      if (!fn) continue;
-      struct neighbours nb = is_wall ? none : nlist_of(&e->nl, s, k, &r, i);
-      fn(e, i, &nb);
+      if (fn) {
+        struct neighbours nb = is_wall ? none : nlist_of(&e->nl, k, &r, f);
+        fn(e, i, &nb);
+      }
+      f += !is_wall;
     }
   }
 }
