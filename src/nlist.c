@@ -41,7 +41,7 @@ static long place_cell(struct nlist *l, long k, const struct neighbour_ranges *r
   long candidates = 0;
   for (int q = 0; q < r->n; q++) candidates += r->count[q];
   int words = (int)((candidates + WORD_BITS - 1) / WORD_BITS);
-  l->decoded = grow(l->decoded, &l->decoded_capacity, candidates, sizeof(int));
+  l->candidates = grow(l->candidates, &l->candidate_capacity, candidates, sizeof(int));
   l->cells[k] = (struct nlist_cell){n, words};
   return words * n_fluid;
 }
@@ -65,28 +65,20 @@ void nlist_build(struct nlist *l, const struct space *s, const struct parts *p, 
   }
 }
 
-struct neighbours nlist_of(struct nlist *l, long k, const struct neighbour_ranges *r, long f) {
-  const int words = l->cells[k].words;
-  const uint64_t *mask = l->bits + l->cells[k].first_word + f * words;
-  int *out = l->decoded, n = 0, q = 0;
-  long base = 0;   /* first candidate of range q */
-  for (int w = 0; w < words; w++)
-    for (uint64_t bits = mask[w]; bits; bits &= bits - 1) {
-      long b = (long)w * WORD_BITS + __builtin_ctzll(bits);
-      while (b >= base + r->count[q]) base += r->count[q++];
-      out[n++] = (int)(r->start[q] + (b - base));
-    }
-  return (struct neighbours){out, n};
+void nlist_enter_cell(struct nlist *l, const struct neighbour_ranges *r) {
+  int *slot = l->candidates;
+  for (int q = 0; q < r->n; q++)
+    for (long j = r->start[q]; j < r->start[q] + r->count[q]; j++) *slot++ = (int)j;
 }
 
 void nlist_free(struct nlist *l) {
   free(l->cells);
   free(l->bits);
-  free(l->decoded);
+  free(l->candidates);
   memset(l, 0, sizeof(*l));
 }
 
 long nlist_bytes(const struct nlist *l) {
   return l->capacity * (long)sizeof(uint64_t) + l->cell_capacity * (long)sizeof(struct nlist_cell) +
-         l->decoded_capacity * (long)sizeof(int);
+         l->candidate_capacity * (long)sizeof(int);
 }

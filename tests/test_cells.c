@@ -48,17 +48,17 @@ static int list_differs(struct nlist *l, const struct space *s, const struct par
                         long i, double radius2) {
   struct neighbour_ranges r;
   neighbour_ranges(s, s->owned_cells[k], &r);
-  struct neighbours nb = nlist_of(l, k, &r, f);
-  int n = 0, differs = 0;
+  nlist_enter_cell(l, &r);
+  struct neighbours nb = nlist_of(l, k, f);
+  int differs = 0;
+  long listed;
   for (int q = 0; q < r.n; q++)
     for (long j = r.start[q]; j < r.start[q] + r.count[q]; j++) {
       double r2 = 0;
       for (int d = 0; d < p->dim; d++) r2 += (p->x[d][i] - p->x[d][j]) * (p->x[d][i] - p->x[d][j]);
-      if (r2 >= radius2 || j == i) continue;
-      differs |= n >= nb.n || nb.j[n] != j;
-      n++;
+      if (r2 < radius2 && j != i) differs |= !neighbours_next(&nb, &listed) || listed != j;
     }
-  return differs || n != nb.n;
+  return differs || neighbours_next(&nb, &listed);
 }
 
 /* Every owned fluid particle's neighbour list, built with radius `radius`, against the stencil
