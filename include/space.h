@@ -14,9 +14,9 @@ struct space {
   long *cell_start;      /* first particle slot of each cell present on this rank */
   int *cell_count;       /* particles of each cell on this rank (0 for absent cells) */
   long n_owned_cells;
-  long *owned_cells;     /* owned cells in increasing index */
-  long *order;           /* scratch: permutation for sorting */
-  long *bucket;          /* scratch: counting-sort offsets per cell */
+  int *owned_cells;      /* owned cells in increasing index (cell indices fit an int: grid.h) */
+  int *order;            /* scratch: permutation for sorting (slots fit an int, as in nlist.h) */
+  int *bucket;           /* scratch: counting-sort offsets per cell */
   void *scratch;         /* scratch: one array's worth of particle data */
   long scratch_capacity;
 };
