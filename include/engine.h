@@ -47,10 +47,11 @@ enum {
   FEAT_SHEPARD = 512       /* scheme delta-sph: same-phase Shepard density and the pressure from it */
 };
 
-/** Work arrays of the scheme, sized to the particle capacity; optional ones stay NULL when the
- *  scene does not need them. */
+/** Work arrays of the scheme, sized to the particle capacity (those read at halo slots) or to
+ *  the owned particles (the RK4 state and sums, the derivatives, the free-surface region and
+ *  normals); optional ones stay NULL when the scene does not need them. */
 struct work {
-  long capacity;
+  long capacity, owned_capacity;
   double *vol;                     /* particle volume m/rho of every slot, this stage [m^dim] */
   double *grad_rho[3];             /* renormalised density gradient [kg/m^4] */
   double *div;                     /* velocity divergence <div u> over all neighbours [1/s] */
@@ -182,8 +183,15 @@ static inline int engine_moving_ghost(const struct engine *e, long i) {
   return e->p.phase[i] == PHASE_WALL && e->c->walls[e->p.wall[i]].moving;
 }
 
-/** Make the work arrays hold at least the current particle capacity. */
+/** Make the work arrays hold at least the current particle capacity (the owned-only ones: the
+ *  owned particles, with room for some to migrate in). */
 void engine_work_reserve(struct engine *e);
+
+/** Bytes held by the work arrays. */
+long engine_work_bytes(struct engine *e);
+
+/** Free the work arrays (every one, also the optional ones) and set them to NULL. */
+void engine_work_free(struct work *w);
 
 /** Evaluate the stage pipeline at the current state (skip_state_halo: the halo is fresh). */
 void engine_evaluate(struct engine *e, int skip_state_halo);

@@ -37,7 +37,7 @@ void parts_free(struct parts *p);
 /** Copy particle src_index of src into slot dst_index of dst (all stored fields). */
 void parts_copy_one(struct parts *dst, long dst_index, const struct parts *src, long src_index);
 
-/** Number of doubles and ints per particle in the persistent arrays (for memory accounting). */
-long parts_bytes_per_particle(const struct parts *p);
+/** Bytes held by the particle arrays (all `capacity` slots). */
+long parts_bytes(const struct parts *p);
 
 #endif

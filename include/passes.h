@@ -4,16 +4,6 @@
 
 #include "engine.h"
 
-/** Ranges of particle slots of the cells around one cell, in global cell order. */
-struct neighbour_ranges {
-  int n;
-  long start[27];
-  int count[27];
-};
-
-/** The particle ranges of the 3^dim cells around cell c (those present on this rank). */
-void neighbour_ranges(const struct space *s, long c, struct neighbour_ranges *r);
-
 /** The separation r_i - r_j of slots i and j into dx [m]; returns its squared length [m^2]. */
 static inline double pair_separation(const struct parts *p, int dim, long i, long j, double *dx) {
   double r2 = 0;

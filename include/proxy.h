@@ -29,6 +29,9 @@ struct halo {
   long n_messages, n_bytes;   /* counters since start */
 };
 
+/** Bytes held by the proxies (cell and send lists, message buffers). */
+long halo_bytes(const struct halo *h);
+
 /** Build the proxies from the cell ownership of s (after every partition change). */
 void halo_build(struct halo *h, const struct space *s, MPI_Comm comm);
 

@@ -14,12 +14,25 @@ struct space {
   long *cell_start;      /* first particle slot of each cell present on this rank */
   int *cell_count;       /* particles of each cell on this rank (0 for absent cells) */
   long n_owned_cells;
-  long *owned_cells;     /* owned cells in increasing index */
-  long *order;           /* scratch: permutation for sorting */
-  long *bucket;          /* scratch: counting-sort offsets per cell */
+  int *owned_cells;      /* owned cells in increasing index (cell indices fit an int: grid.h) */
+  int *order;            /* scratch: permutation for sorting (slots fit an int, as in nlist.h) */
+  int *bucket;           /* scratch: counting-sort offsets per cell */
   void *scratch;         /* scratch: one array's worth of particle data */
   long scratch_capacity;
 };
+
+/** Ranges of particle slots of the cells around one cell, in global cell order. */
+struct neighbour_ranges {
+  int n;
+  long start[27];
+  int count[27];
+};
+
+/** The particle ranges of the 3^dim cells around cell c (those present on this rank). */
+void neighbour_ranges(const struct space *s, long c, struct neighbour_ranges *r);
+
+/** Bytes held by the space's arrays (per-cell index and ownership, sort scratch). */
+long space_bytes(const struct space *s);
 
 /** Set up the space over grid g for `rank` of `n_ranks`, with `halo_layers` cell layers. */
 void space_init(struct space *s, const struct grid *g, int rank, int n_ranks, int halo_layers);

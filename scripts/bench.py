@@ -127,6 +127,14 @@ def derive(rows, case):
     d["bytes_per_particle_end"] = sum(ends) / (fluid + wall)
     d["rss_peak_max_rank"] = max(peaks)
     d["rss_end_sum"] = sum(ends)
+    files = [num(r["value"]) for r in rows if r["name"].startswith("rss_file_end_rank")]
+    own = [num(r["value"]) for r in rows if r["name"].startswith("project_bytes_rank")]
+    d["bytes_per_particle_file"] = sum(files) / (fluid + wall)
+    d["bytes_per_particle_project"] = sum(own) / (fluid + wall)
+    d["project_sum"] = sum(own)
+    d["project_by_owner"] = {r["name"][len("bytes_"):]: num(r["value"]) / (fluid + wall)
+                             for r in rows if r["name"].startswith("bytes_")}
+    d["halo_particles"] = num(by["halo_particles"]["value"])
     return d
 
 

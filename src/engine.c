@@ -317,25 +317,8 @@ int engine_run(struct engine *e) {
 }
 
 void engine_free(struct engine *e) {
-  free_surface_arrays(&e->w);
+  engine_work_free(&e->w);
   nlist_free(&e->nl);
-  for (int d = 0; d < 3; d++) {
-    free(e->w.du[d]);
-    free(e->w.grad_rho[d]);
-    free(e->w.dv[d]);
-    free(e->w.x0[d]);
-    free(e->w.v0[d]);
-    free(e->w.sum_x[d]);
-    free(e->w.sum_v[d]);
-    free(e->w.interface_normal[d]);
-  }
-  free(e->w.colour_grad);
-  free(e->w.kappa_curvature);
-  free(e->w.vol);
-  free(e->w.div);
-  free(e->w.drho);
-  free(e->w.rho0);
-  free(e->w.sum_rho);
   halo_free(&e->halo);
   space_free(&e->space);
   parts_free(&e->p);

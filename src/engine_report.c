@@ -23,6 +23,19 @@ static double current_rss_bytes(void) {
   return (double)pages_resident * (double)sysconf(_SC_PAGESIZE);
 }
 
+/* File-backed resident memory of this process [bytes]: the pages of the executable and the shared
+ * libraries (MPI, HDF5, ...), which every rank maps (RssFile of /proc/self/status; 0 where it is
+ * missing). */
+static double current_file_rss_bytes(void) {
+  char line[256];
+  double kb = 0;
+  FILE *f = fopen("/proc/self/status", "r");
+  while (f && fgets(line, sizeof line, f))
+    if (sscanf(line, "RssFile: %lf kB", &kb) == 1) break;
+  if (f) fclose(f);
+  return kb * 1024.0;
+}
+
 void engine_global_counts(const struct engine *e, double *n_fluid, double *n_wall) {
   double local[2] = {0, 0}, total[2];
   for (long i = 0; i < e->p.n_owned; i++) local[e->p.phase[i] == PHASE_WALL]++;
@@ -36,6 +49,20 @@ static double max_over_ranks(const struct engine *e, double x) {
   return x;
 }
 
+/* The project's own arrays of this rank, by owner [bytes]. */
+enum { MEM_PARTICLES, MEM_WORK, MEM_NLIST, MEM_CELLS, MEM_HALO, N_MEM };
+static const char *const mem_names[N_MEM] = {"particles", "work", "neighbour_lists", "cells", "halo_buffers"};
+
+static void project_bytes(struct engine *e, double *bytes) {
+  bytes[MEM_PARTICLES] = (double)parts_bytes(&e->p);
+  bytes[MEM_WORK] = (double)engine_work_bytes(e);
+  bytes[MEM_NLIST] = (double)nlist_bytes(&e->nl);
+  bytes[MEM_CELLS] = (double)space_bytes(&e->space);
+  bytes[MEM_HALO] = (double)halo_bytes(&e->halo);
+}
+
+#define PER_RANK 4   /* memory figures gathered from each rank */
+
 /* Everything the summary reports, reduced over the ranks (memory gathered to rank 0). */
 struct run_summary {
   const struct engine *e;
@@ -43,7 +70,9 @@ struct run_summary {
   double loop_seconds, n_fluid, n_wall;
   double op_max[ENGINE_MAX_OPS], op_mean[ENGINE_MAX_OPS], op_pairs[ENGINE_MAX_OPS];
   double migrate_max, migrate_mean, output_max, steps_max, dropped_max, dropped_mean, cpu_max, cpu_mean;
-  double *rss_peak;                /* peak and current RSS per rank, interleaved; rank 0 only [bytes] */
+  double *per_rank;                /* per rank: peak RSS, current RSS, its file-backed part, project bytes; rank 0 only [bytes] */
+  double mem_sum[N_MEM];           /* the project's arrays by owner, summed over the ranks [bytes] */
+  double halo_particles;           /* halo copies summed over the ranks */
 };
 
 /* Max and mean over ranks of x. */
@@ -54,7 +83,12 @@ static void max_mean(const struct engine *e, double x, double *max, double *mean
 }
 
 static void summarise(struct engine *e, long steps, double loop_seconds, struct run_summary *s) {
-  double rss[2] = {peak_rss_bytes(), current_rss_bytes()}, *all = NULL;
+  double rss[PER_RANK] = {peak_rss_bytes(), current_rss_bytes(), current_file_rss_bytes(), 0}, *all = NULL, mem[N_MEM];
+  project_bytes(e, mem);
+  for (int k = 0; k < N_MEM; k++) rss[3] += mem[k];
+  MPI_Reduce(mem, s->mem_sum, N_MEM, MPI_DOUBLE, MPI_SUM, 0, e->comm);
+  double halo = (double)e->p.n_halo;
+  MPI_Reduce(&halo, &s->halo_particles, 1, MPI_DOUBLE, MPI_SUM, 0, e->comm);
   s->e = e;
   s->steps = steps;
   s->loop_seconds = loop_seconds;
@@ -69,9 +103,9 @@ static void summarise(struct engine *e, long steps, double loop_seconds, struct 
   s->output_max = max_over_ranks(e, e->t_output);
   s->steps_max = max_over_ranks(e, e->t_steps);
   max_mean(e, e->t_steps_cpu, &s->cpu_max, &s->cpu_mean);
-  if (e->rank == 0) all = malloc(2 * (size_t)e->n_ranks * sizeof(double));
-  MPI_Gather(rss, 2, MPI_DOUBLE, all, 2, MPI_DOUBLE, 0, e->comm);
-  s->rss_peak = all;
+  if (e->rank == 0) all = malloc(PER_RANK * (size_t)e->n_ranks * sizeof(double));
+  MPI_Gather(rss, PER_RANK, MPI_DOUBLE, all, PER_RANK, MPI_DOUBLE, 0, e->comm);
+  s->per_rank = all;
 }
 
 /* Rank 0: the summary ctx (a struct run_summary) as CSV rows name,kind,value,seconds_max,
@@ -91,9 +125,13 @@ static void write_rows(FILE *f, const void *ctx) {
   fprintf(f, "migration,time,%ld,%.6f,%.6f,\n", e->n_repartitions, s->migrate_max, s->migrate_mean);
   fprintf(f, "output,time,,%.6f,,\n", s->output_max);
   fprintf(f, "dropped_operations,time,,%.6f,%.6f,\n", s->dropped_max, s->dropped_mean);
-  for (int r = 0; r < e->n_ranks; r++)
-    fprintf(f, "rss_peak_rank%d,memory,%.0f,,,\nrss_end_rank%d,memory,%.0f,,,\n", r,
-            s->rss_peak[2 * r], r, s->rss_peak[2 * r + 1]);
+  fprintf(f, "halo_particles,run,%.0f,,,\n", s->halo_particles);
+  for (int r = 0; r < e->n_ranks; r++) {
+    const double *m = s->per_rank + PER_RANK * r;
+    fprintf(f, "rss_peak_rank%d,memory,%.0f,,,\nrss_end_rank%d,memory,%.0f,,,\n", r, m[0], r, m[1]);
+    fprintf(f, "rss_file_end_rank%d,memory,%.0f,,,\nproject_bytes_rank%d,memory,%.0f,,,\n", r, m[2], r, m[3]);
+  }
+  for (int k = 0; k < N_MEM; k++) fprintf(f, "bytes_%s,memory,%.0f,,,\n", mem_names[k], s->mem_sum[k]);
 }
 
 /* Rank 0: write OUTDIR/timings.csv through a temporary name; a failure is only reported. */
@@ -104,10 +142,12 @@ static void write_timings(const struct engine *e, const struct run_summary *s) {
 
 static void print_summary(const struct engine *e, const struct run_summary *s) {
   double rate = s->steps > 0 && s->loop_seconds > 0 ? s->n_fluid * (double)s->steps / s->loop_seconds : 0;
-  double rss_max = 0, rss_sum = 0;
+  double rss_max = 0, rss_sum = 0, own = 0, n = s->n_fluid + s->n_wall;
   for (int r = 0; r < e->n_ranks; r++) {
-    rss_max = rss_max > s->rss_peak[2 * r] ? rss_max : s->rss_peak[2 * r];
-    rss_sum += s->rss_peak[2 * r];
+    const double *m = s->per_rank + PER_RANK * r;
+    rss_max = rss_max > m[0] ? rss_max : m[0];
+    rss_sum += m[0];
+    own += m[3];
   }
   printf("summary: %ld steps in %.2f s on %d ranks; %.0f fluid + %.0f wall particles\n", s->steps,
          s->loop_seconds, e->n_ranks, s->n_fluid, s->n_wall);
@@ -116,7 +156,10 @@ static void print_summary(const struct engine *e, const struct run_summary *s) {
   printf("  %6.2f s  migration, sort, halo rebuild (%ld re-partitions)\n", s->migrate_max, e->n_repartitions);
   printf("  %6.2f s  output\n", e->t_output);
   printf("  peak memory: %.1f MB on the largest rank, %.0f bytes per particle (all ranks)\n",
-         rss_max / 1e6, rss_sum / (s->n_fluid + s->n_wall));
+         rss_max / 1e6, rss_sum / n);
+  printf("  project arrays: %.0f bytes per particle (all ranks):", own / n);
+  for (int k = 0; k < N_MEM; k++) printf(" %s %.0f", mem_names[k], s->mem_sum[k] / n);
+  printf("\n");
   fflush(stdout);
 }
 
@@ -127,5 +170,5 @@ void engine_report(struct engine *e, long steps, double loop_seconds) {
     print_summary(e, &s);
     write_timings(e, &s);
   }
-  free(s.rss_peak);
+  free(s.per_rank);
 }

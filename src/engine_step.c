@@ -13,8 +13,43 @@ static double *grow(double *a, long n) {
   return q;
 }
 
-/* Grow an optional array only when its feature is on. */
-static double *grow_if(double *a, long n, int on) { return on ? grow(a, n) : a; }
+/* One work array: where its pointer lives, whether halo slots use it (else only the owned
+ * particles do), and the feature it belongs to (0: every scene). */
+struct work_slot {
+  double **a;
+  int halo;
+  unsigned feature;
+};
+
+/* Every work array of w in dimension dim; returns the count. */
+static int work_slots(struct work *w, int dim, struct work_slot *t) {
+  int n = 0;
+  for (int d = 0; d < dim; d++) {
+    t[n++] = (struct work_slot){&w->grad_rho[d], 1, 0};
+    t[n++] = (struct work_slot){&w->du[d], 1, FEAT_SHIFT};
+    t[n++] = (struct work_slot){&w->normal[d], 0, FEAT_SURFACE};
+    t[n++] = (struct work_slot){&w->dv[d], 0, 0};
+    t[n++] = (struct work_slot){&w->x0[d], 0, 0};
+    t[n++] = (struct work_slot){&w->v0[d], 0, 0};
+    t[n++] = (struct work_slot){&w->sum_x[d], 0, 0};
+    t[n++] = (struct work_slot){&w->sum_v[d], 0, 0};
+  }
+  t[n++] = (struct work_slot){&w->vol, 1, 0};
+  t[n++] = (struct work_slot){&w->div, 1, 0};
+  t[n++] = (struct work_slot){&w->surface, 1, FEAT_SURFACE};
+  t[n++] = (struct work_slot){&w->region, 0, FEAT_SURFACE};
+  t[n++] = (struct work_slot){&w->lambda, 0, FEAT_SURFACE};
+  t[n++] = (struct work_slot){&w->drho, 0, 0};
+  t[n++] = (struct work_slot){&w->rho0, 0, 0};
+  t[n++] = (struct work_slot){&w->sum_rho, 0, 0};
+  t[n++] = (struct work_slot){&w->rho_s, 1, FEAT_SHEPARD};
+  for (int d = 0; d < dim; d++) t[n++] = (struct work_slot){&w->interface_normal[d], 1, FEAT_SURFACE_TENSION};
+  t[n++] = (struct work_slot){&w->colour_grad, 0, FEAT_SURFACE_TENSION};
+  t[n++] = (struct work_slot){&w->kappa_curvature, 0, FEAT_SURFACE_TENSION};
+  return n;
+}
+
+#define MAX_WORK_SLOTS 48
 
 /* 1 if an optional array of a feature that is on has not been allocated yet. */
 static int optional_missing(const struct engine *e) {
@@ -25,32 +60,30 @@ static int optional_missing(const struct engine *e) {
 
 void engine_work_reserve(struct engine *e) {
   struct work *w = &e->w;
-  long n = e->p.capacity;
-  unsigned f = e->features;
-  if (n <= w->capacity && !optional_missing(e)) return;
-  for (int d = 0; d < e->p.dim; d++) {
-    w->grad_rho[d] = grow(w->grad_rho[d], n);
-    w->dv[d] = grow(w->dv[d], n);
-    w->x0[d] = grow(w->x0[d], n);
-    w->v0[d] = grow(w->v0[d], n);
-    w->sum_x[d] = grow(w->sum_x[d], n);
-    w->sum_v[d] = grow(w->sum_v[d], n);
-    w->du[d] = grow_if(w->du[d], n, f & FEAT_SHIFT);
-    w->normal[d] = grow_if(w->normal[d], n, f & FEAT_SURFACE);
-    w->interface_normal[d] = grow_if(w->interface_normal[d], n, f & FEAT_SURFACE_TENSION);
+  struct work_slot t[MAX_WORK_SLOTS];
+  long n_all = e->p.capacity, n_owned = w->owned_capacity;
+  if (e->p.n_owned > n_owned) n_owned = e->p.n_owned + e->p.n_owned / 16 + 64;   /* room to migrate */
+  if (n_all <= w->capacity && n_owned <= w->owned_capacity && !optional_missing(e)) return;
+  for (int k = 0, n = work_slots(w, e->p.dim, t); k < n; k++)
+    if (!t[k].feature || (e->features & t[k].feature)) *t[k].a = grow(*t[k].a, t[k].halo ? n_all : n_owned);
+  w->capacity = n_all;
+  w->owned_capacity = n_owned;
+}
+
+long engine_work_bytes(struct engine *e) {
+  struct work_slot t[MAX_WORK_SLOTS];
+  long bytes = 0;
+  for (int k = 0, n = work_slots(&e->w, e->p.dim, t); k < n; k++)
+    if (*t[k].a) bytes += (t[k].halo ? e->w.capacity : e->w.owned_capacity) * (long)sizeof(double);
+  return bytes;
+}
+
+void engine_work_free(struct work *w) {
+  struct work_slot t[MAX_WORK_SLOTS];
+  for (int k = 0, n = work_slots(w, 3, t); k < n; k++) {
+    free(*t[k].a);
+    *t[k].a = NULL;
   }
-  w->vol = grow(w->vol, n);
-  w->div = grow(w->div, n);
-  w->drho = grow(w->drho, n);
-  w->rho0 = grow(w->rho0, n);
-  w->sum_rho = grow(w->sum_rho, n);
-  w->surface = grow_if(w->surface, n, f & FEAT_SURFACE);
-  w->region = grow_if(w->region, n, f & FEAT_SURFACE);
-  w->lambda = grow_if(w->lambda, n, f & FEAT_SURFACE);
-  w->rho_s = grow_if(w->rho_s, n, f & FEAT_SHEPARD);
-  w->colour_grad = grow_if(w->colour_grad, n, f & FEAT_SURFACE_TENSION);
-  w->kappa_curvature = grow_if(w->kappa_curvature, n, f & FEAT_SURFACE_TENSION);
-  w->capacity = n;
 }
 
 /* The arrays named by a halo field mask. */

@@ -1,12 +1,10 @@
 /* mem_estimate.c — memory per rank of a run and memory available on a node. The constants were
  * measured with the peak resident size that the end-of-run summary prints (engine_report.c),
- * between two resolutions of the same case: 305-320 bytes per particle in 2D (single phase with
- * walls; two phases with shifting, free surface and damper), 370-420 in 3D, before the per-step
- * neighbour lists; these add 4 bytes per neighbour within 1.15 kernel supports of each fluid
- * particle (about 66 in 2D, 410 in 3D at h/dx = 1.33): the two-phase dam break measured 590-620
- * bytes per particle in 2D between 1.7e5 and 6.6e5 particles; 3D is estimated as 420 + 1650.
- * About 25 MB for a process with a few particles; 155 bytes per cell of a 2D grid on the rank
- * that runs METIS. */
+ * between two resolutions of the same case on one rank, with the neighbour lists as bit masks:
+ * 380-390 bytes per particle in 2D (the one- and two-phase dam breaks, 4.4e4 to 1.8e5
+ * particles), 640 in 3D (the tests' hydrostatic box, 2.2e4 to 5.2e4 particles, 60 % wall ghosts);
+ * the constants keep a margin over these. About 25 MB for a process with a few particles; 155
+ * bytes per cell of a 2D grid on the rank that runs METIS. */
 #include "mem_estimate.h"
 
 #include <math.h>
@@ -14,8 +12,8 @@
 #include <stdlib.h>
 #include <unistd.h>
 
-#define BYTES_PER_PARTICLE_2D 650.0
-#define BYTES_PER_PARTICLE_3D 2100.0
+#define BYTES_PER_PARTICLE_2D 450.0
+#define BYTES_PER_PARTICLE_3D 800.0
 #define PROCESS_BYTES 30e6
 #define CELL_BYTES_BASE 64.0       /* cell arrays of every rank */
 #define CELL_BYTES_PER_LINK 16.0   /* METIS graph and work arrays per neighbour link */

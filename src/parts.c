@@ -70,8 +70,8 @@ void parts_copy_one(struct parts *dst, long j, const struct parts *src, long i) 
   if (src->wall) dst->wall[j] = src->wall[i];
 }
 
-long parts_bytes_per_particle(const struct parts *p) {
+long parts_bytes(const struct parts *p) {
   long doubles = 2 * p->dim + 3 + (p->wall ? p->dim : 0);
   long ints = 2 + (p->wall ? 1 : 0);
-  return doubles * 8 + ints * 4 + 8;
+  return p->capacity * (doubles * (long)sizeof(double) + ints * (long)sizeof(int) + (long)sizeof(int64_t));
 }

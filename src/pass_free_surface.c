@@ -23,8 +23,8 @@ static void moments(const struct engine *e, long i, const struct neighbours *nb,
   const int dim = p->dim;
   for (int k = 0; k < 9; k++) mt[k] = 0;
   for (int d = 0; d < 3; d++) sum_gw[d] = 0;
-  for (int n = 0; n < nb->n; n++) {
-    const long j = nb->j[n];
+  struct neighbours it = *nb;
+  for (long j; neighbours_next(&it, &j);) {
     double dx[3], r2 = pair_separation(p, dim, i, j, dx);
     if (r2 >= e->kern.support2) continue;
     double fv = kernel_f(&e->kern, r2) * e->w.vol[j];
@@ -54,8 +54,8 @@ static int umbrella_covered(const struct engine *e, long i, const struct neighbo
   const double h = e->h;
   double t[3];
   for (int d = 0; d < dim; d++) t[d] = p->x[d][i] + h * n[d];
-  for (int k = 0; k < nb->n; k++) {
-    const long j = nb->j[k];
+  struct neighbours it = *nb;
+  for (long j; neighbours_next(&it, &j);) {
     double rij2 = 0, rt[3], rt2 = 0, rn = 0;
     for (int d = 0; d < dim; d++) {
       double dij = p->x[d][j] - p->x[d][i];
@@ -107,8 +107,8 @@ static void band_of(struct engine *e, long i, const struct neighbours *nb) {
   const struct parts *p = &e->p;
   double band = fmin(e->c->surface_band * e->h, e->kern.support), band2 = band * band;
   int in = e->w.surface[i] > 0;
-  for (int k = 0; k < nb->n && !in; k++) {
-    const long j = nb->j[k];
+  struct neighbours it = *nb;
+  for (long j; !in && neighbours_next(&it, &j);) {
     if (e->w.surface[j] <= 0) continue;
     double r2 = 0;
     for (int d = 0; d < p->dim; d++) r2 += (p->x[d][i] - p->x[d][j]) * (p->x[d][i] - p->x[d][j]);

@@ -29,8 +29,8 @@ static inline __attribute__((always_inline)) int gradients_of(struct engine *e, 
     vi[d] = v[d][i];
   }
   int n_nb = 0;
-  for (int n = 0; n < nb->n; n++) {
-    const long j = nb->j[n];
+  struct neighbours it = *nb;
+  for (long j; neighbours_next(&it, &j);) {
     double dx[3], r2 = 0, dvdx = 0;
     for (int d = 0; d < dim; d++) {
       dx[d] = xi[d] - x[d][j];

@@ -1,25 +1,25 @@
-/* pass_neighbours.c — the neighbour cells of a cell as ranges of particle slots; the loop over
- * owned particles with their neighbour lists. */
+/* pass_neighbours.c — the loop over owned particles with their neighbour lists. */
 #include "passes.h"
 
-void neighbour_ranges(const struct space *s, long c, struct neighbour_ranges *r) {
-  long nb[27];
-  int n = grid_stencil(&s->grid, c, 1, nb);
-  r->n = 0;
-  for (int k = 0; k < n; k++) {
-    int count = s->cell_count[nb[k]];
-    if (!count) continue;
-    r->start[r->n] = s->cell_start[nb[k]];
-    r->count[r->n++] = count;
-  }
-}
-
 void pass_for_each_owned(struct engine *e, particle_fn fluid, particle_fn wall) {
+  const struct space *s = &e->space;
   const struct parts *p = &e->p;
-  for (long i = 0; i < p->n_owned; i++) {
-    particle_fn fn = p->phase[i] == PHASE_WALL ? wall : fluid;
-    struct neighbours nb = nlist_of(&e->nl, i);
-    if (fn) fn(e, i, &nb);
+  for (long k = 0; k < s->n_owned_cells; k++) {
+    long c = s->owned_cells[k], first = s->cell_start[c];
+    if (!s->cell_count[c]) continue;
+    struct neighbour_ranges r;
+    neighbour_ranges(s, c, &r);
+    nlist_enter_cell(&e->nl, &r);
+    long f = 0;   /* fluid particles of the cell before slot i */
+    for (long i = first; i < first + s->cell_count[c]; i++) {
+      int is_wall = p->phase[i] == PHASE_WALL;
+      particle_fn fn = is_wall ? wall : fluid;
+      if (fn) {
+        struct neighbours nb = is_wall ? nlist_none() : nlist_of(&e->nl, k, f);
+        fn(e, i, &nb);
+      }
+      f += !is_wall;
+    }
   }
 }
 

@@ -18,11 +18,10 @@ static void shepard_density(struct engine *e, long i, const struct neighbours *n
   const double w0 = kernel_w(&e->kern, 0.0), support2 = e->kern.support2;
   double mass_sum = m[i] * w0, vol_sum = vol[i] * w0;
   long pairs = 0;
-  for (int n = 0; n < nb->n; n++) {
-    const long j = nb->j[n];
+  struct neighbours it = *nb;
+  for (long j; neighbours_next(&it, &j);) {
     if (phase[j] != ph) continue;
-    double r2 = 0;
-    for (int d = 0; d < dim; d++) r2 += (p->x[d][i] - p->x[d][j]) * (p->x[d][i] - p->x[d][j]);
+    double dx[3], r2 = pair_separation(p, dim, i, j, dx);
     if (r2 >= support2) continue;
     double w = kernel_w(&e->kern, r2);
     mass_sum += m[j] * w;

@@ -26,8 +26,8 @@ static long colour_gradient(const struct engine *e, long i, const struct neighbo
   const int dim = p->dim, ph = p->phase[i];
   long pairs = 0;
   for (int d = 0; d < dim; d++) grad_chi[d] = 0;
-  for (int n = 0; n < nb->n; n++) {
-    const long j = nb->j[n];
+  struct neighbours it = *nb;
+  for (long j; neighbours_next(&it, &j);) {
     double dx[3], r2 = pair_separation(p, dim, i, j, dx);
     if (r2 >= e->kern.support2) continue;
     pairs++;
@@ -90,8 +90,8 @@ static double curvature_of(const struct engine *e, long i, const struct neighbou
   double *const *nrm = e->w.interface_normal;
   const int dim = p->dim, ph = p->phase[i];
   double g[9] = {0}, b[9] = {0};   /* row-major dim x dim */
-  for (int n = 0; n < nb->n; n++) {
-    const long j = nb->j[n];
+  struct neighbours it = *nb;
+  for (long j; neighbours_next(&it, &j);) {
     if (p->phase[j] == PHASE_WALL) continue;
     double dx[3], r2 = pair_separation(p, dim, i, j, dx), phi = p->phase[j] == ph ? 1.0 : -1.0, nj2 = 0;
     for (int d = 0; d < dim; d++) nj2 += nrm[d][j] * nrm[d][j];

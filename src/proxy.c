@@ -88,6 +88,16 @@ void halo_build(struct halo *h, const struct space *s, MPI_Comm comm) {
   h->counts = malloc(4 * (h->n_proxies + 1) * sizeof(long));
 }
 
+long halo_bytes(const struct halo *h) {
+  long bytes = 0;
+  for (int k = 0; k < h->n_proxies; k++) {
+    const struct proxy *px = &h->proxies[k];
+    bytes += (px->n_cells_out + px->send_index_cap) * (long)sizeof(long) +
+             (px->send_cap + px->recv_cap) * (long)sizeof(double);
+  }
+  return bytes;
+}
+
 /* The halo's count scratch (4 rows of n_proxies + 1), zeroed. */
 static long *zeroed_counts(struct halo *h) {
   memset(h->counts, 0, 4 * (h->n_proxies + 1) * sizeof(long));

@@ -18,8 +18,8 @@ void space_init(struct space *s, const struct grid *g, int rank, int n_ranks, in
   s->owner = xcalloc(g->n_cells, sizeof(int));
   s->cell_start = xcalloc(g->n_cells, sizeof(long));
   s->cell_count = xcalloc(g->n_cells, sizeof(int));
-  s->owned_cells = xcalloc(g->n_cells, sizeof(long));
-  s->bucket = xcalloc(g->n_cells + 1, sizeof(long));
+  s->owned_cells = xcalloc(g->n_cells, sizeof(int));
+  s->bucket = xcalloc(g->n_cells + 1, sizeof(int));
 }
 
 void space_free(struct space *s) {
@@ -33,11 +33,16 @@ void space_free(struct space *s) {
   memset(s, 0, sizeof(*s));
 }
 
+long space_bytes(const struct space *s) {
+  long per_cell = 4 * (long)sizeof(int) + (long)sizeof(long);   /* owner, count, owned, bucket; start */
+  return s->grid.n_cells * per_cell + s->scratch_capacity * (long)(sizeof(int) + sizeof(double));
+}
+
 void space_set_owner(struct space *s, const int *owner) {
   memcpy(s->owner, owner, s->grid.n_cells * sizeof(int));
   s->n_owned_cells = 0;
   for (long c = 0; c < s->grid.n_cells; c++)
-    if (owner[c] == s->rank) s->owned_cells[s->n_owned_cells++] = c;
+    if (owner[c] == s->rank) s->owned_cells[s->n_owned_cells++] = (int)c;
 }
 
 long space_assign_cells(const struct space *s, struct parts *p, long first, long n) {
@@ -54,20 +59,21 @@ static void ensure_scratch(struct space *s, long n) {
   if (n <= s->scratch_capacity) return;
   free(s->order);
   free(s->scratch);
-  s->order = xcalloc(n, sizeof(long));
+  s->order = xcalloc(n, sizeof(int));
   s->scratch = xcalloc(n, sizeof(double));
   s->scratch_capacity = n;
 }
 
 /* Counting sort by cell into s->order, then insertion sort by id inside each cell. */
 static void sort_order(struct space *s, const struct parts *p, long first, long n) {
-  long *bucket = s->bucket;
-  memset(bucket, 0, (s->grid.n_cells + 1) * sizeof(long));
+  int *bucket = s->bucket;
+  memset(bucket, 0, (s->grid.n_cells + 1) * sizeof(int));
   for (long i = 0; i < n; i++) bucket[p->cell[first + i] + 1]++;
   for (long c = 0; c < s->grid.n_cells; c++) bucket[c + 1] += bucket[c];
-  for (long i = 0; i < n; i++) s->order[bucket[p->cell[first + i]]++] = first + i;
+  for (long i = 0; i < n; i++) s->order[bucket[p->cell[first + i]]++] = (int)(first + i);
   for (long k = 1; k < n; k++) {
-    long cur = s->order[k], j = k;
+    int cur = s->order[k];
+    long j = k;
     while (j > 0 && p->cell[s->order[j - 1]] == p->cell[cur] && p->id[s->order[j - 1]] > p->id[cur]) {
       s->order[j] = s->order[j - 1];
       j--;
@@ -106,5 +112,17 @@ void space_index(struct space *s, const struct parts *p) {
   for (long i = 0; i < n; i++) {
     int c = p->cell[i];
     if (s->cell_count[c]++ == 0) s->cell_start[c] = i;
+  }
+}
+
+void neighbour_ranges(const struct space *s, long c, struct neighbour_ranges *r) {
+  long nb[27];
+  int n = grid_stencil(&s->grid, c, 1, nb);
+  r->n = 0;
+  for (int k = 0; k < n; k++) {
+    int count = s->cell_count[nb[k]];
+    if (!count) continue;
+    r->start[r->n] = s->cell_start[nb[k]];
+    r->count[r->n++] = count;
   }
 }

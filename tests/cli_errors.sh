@@ -24,7 +24,7 @@ case=cases/hydrostatic-1phase/case.yaml
 expect 0 "usage" -- build/mpsph --help
 expect 0 "^mpsph " -- build/mpsph --version
 expect 0 "# particles: 625 fluid" -- build/mpsph check "$case"
-expect 0 "# memory: about [0-9.]+ MB on one rank \(650 bytes per particle" -- build/mpsph check "$case"
+expect 0 "# memory: about [0-9.]+ MB on one rank \(450 bytes per particle" -- build/mpsph check "$case"
 expect 0 "# particles: up to 1e\+10 .*not counted" -- \
   env MPSPH_MEMORY_AVAILABLE=16e9 build/mpsph check "$case" --set resolution.dx=1e-5
 expect 1 "usage" -- build/mpsph

@@ -1,5 +1,7 @@
 /* test_cells.c — the cell-list neighbours (sorted by cell and id, 3^dim stencil) equal the
- * brute-force neighbour set on random particles, in 2D and 3D, and the sort is by (cell, id). */
+ * brute-force neighbour set on random particles, in 2D and 3D, the sort is by (cell, id), and
+ * the neighbour lists (bit masks over the stencil) read back every slot within their radius, in
+ * the stencil's order (global cell order, then slot order). */
 #include <stdlib.h>
 #include "check.h"
 #include "passes.h"
@@ -11,7 +13,7 @@ static void random_parts(struct parts *p, int dim, long n, unsigned seed) {
   for (long i = 0; i < n; i++) {
     for (int d = 0; d < dim; d++) p->x[d][i] = rand() / (double)RAND_MAX;
     p->id[i] = (int64_t)((i * 7919) % n);
-    p->phase[i] = 0;
+    p->phase[i] = i % 5 ? 0 : PHASE_WALL;   /* some wall ghosts: they have no neighbour list */
   }
   p->n_owned = n;
 }
@@ -39,6 +41,41 @@ static long cell_count_pairs(const struct space *s, const struct parts *p, long 
   return count;
 }
 
+/* Owned slot i (in owned cell k, its f-th fluid particle) against its neighbour list: the same
+ * slots, in the same order, as a scan of the stencil for the other slots within radius2.
+ * Returns 1 on a mismatch. */
+static int list_differs(struct nlist *l, const struct space *s, const struct parts *p, long k, long f,
+                        long i, double radius2) {
+  struct neighbour_ranges r;
+  neighbour_ranges(s, s->owned_cells[k], &r);
+  nlist_enter_cell(l, &r);
+  struct neighbours nb = nlist_of(l, k, f);
+  int differs = 0;
+  long listed;
+  for (int q = 0; q < r.n; q++)
+    for (long j = r.start[q]; j < r.start[q] + r.count[q]; j++) {
+      double r2 = 0;
+      for (int d = 0; d < p->dim; d++) r2 += (p->x[d][i] - p->x[d][j]) * (p->x[d][i] - p->x[d][j]);
+      if (r2 < radius2 && j != i) differs |= !neighbours_next(&nb, &listed) || listed != j;
+    }
+  return differs || neighbours_next(&nb, &listed);
+}
+
+/* Every owned fluid particle's neighbour list, built with radius `radius`, against the stencil
+ * scan. */
+static long list_mismatches(const struct space *s, const struct parts *p, double radius) {
+  struct nlist l = {0};
+  long bad = 0;
+  nlist_build(&l, s, p, radius);
+  for (long k = 0; k < s->n_owned_cells; k++) {
+    long c = s->owned_cells[k], f = 0;
+    for (long i = s->cell_start[c]; i < s->cell_start[c] + s->cell_count[c]; i++)
+      if (p->phase[i] != PHASE_WALL) bad += list_differs(&l, s, p, k, f++, i, radius * radius);
+  }
+  nlist_free(&l);
+  return bad;
+}
+
 static void check_dim(int dim, long n, double support) {
   struct parts p;
   struct grid g;
@@ -59,6 +96,8 @@ static void check_dim(int dim, long n, double support) {
   for (long i = 0; i < n; i++)
     mismatches += brute_count(&p, i, support * support) != cell_count_pairs(&s, &p, i, support * support);
   CHECK(mismatches == 0, "%dD: %ld particles with a wrong neighbour count", dim, mismatches);
+  mismatches = list_mismatches(&s, &p, support);
+  CHECK(mismatches == 0, "%dD: %ld particles with a wrong neighbour list", dim, mismatches);
   free(owner);
   space_free(&s);
   parts_free(&p);

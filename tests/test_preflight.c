@@ -43,7 +43,7 @@ static void check_estimate(void) {
   struct mem_estimate one = mem_estimate_rank(&c, support, 1e6, 1);
   CHECK(one.particles == 1e6, "one rank holds every particle and no halo: %g", one.particles);
   CHECK(one.total == one.process + one.cells + 1e6 * one.bytes_per_particle, "total");
-  CHECK(one.cells > 0 && one.bytes_per_particle == 650, "cells %g", one.cells);
+  CHECK(one.cells > 0 && one.bytes_per_particle == 450, "cells %g", one.cells);
   struct mem_estimate four = mem_estimate_rank(&c, support, 1e6, 4);
   CHECK(four.particles > 2.5e5 && four.particles < 5e5, "a quarter plus a halo: %g", four.particles);
   struct mem_estimate small = mem_estimate_rank(&c, support, 100, 4);
