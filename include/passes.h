@@ -28,9 +28,11 @@ void pass_neighbour_lists(struct engine *e);
  *  after the halo updates of the state and the wall ghost values. */
 void pass_volumes(struct engine *e);
 
-/** Shepard sums at one point, per fluid phase: sum W V, and sum W V times p, rho, u. */
+/** Shepard sums at one point: {sum W V, and sum W V times p, rho, u[3]} over every fluid phase
+ *  (all) and over each phase on its own (phase[k]). */
+enum { SHEPARD_W, SHEPARD_P, SHEPARD_RHO, SHEPARD_U, SHEPARD_SUMS = SHEPARD_U + 3 };
 struct shepard {
-  double w[CASE_MAX_PHASES], wp[CASE_MAX_PHASES], wrho[CASE_MAX_PHASES], wu[CASE_MAX_PHASES][3];
+  double all[SHEPARD_SUMS], phase[CASE_MAX_PHASES][SHEPARD_SUMS];
 };
 
 /** Called for each slot j within the kernel support of a point, with wv = W V_j [-]. */
@@ -48,9 +50,10 @@ void shepard_at(const struct engine *e, const double *xs, struct shepard *s, lon
  *  mirror array), turned with the wall. */
 void wall_mirror_point(const struct engine *e, long k, double *xs);
 
-/** Wall ghosts: Shepard interpolation of p, u, rho at the mirror point over the phase with the
- *  largest Shepard weight there, hydrostatic pressure correction with that phase's density and
- *  free-/no-slip velocity (Marrone et al. 2011). Owned ghosts only. */
+/** Wall ghosts: Shepard interpolation of p, u, rho at the mirror point (over every phase, or
+ *  with the density-weighted interface pressure over the phase with the largest Shepard weight
+ *  there), hydrostatic pressure correction and free-/no-slip velocity (Marrone et al. 2011).
+ *  Owned ghosts only. */
 void pass_wall_ghosts(struct engine *e);
 
 /** Scheme delta-sph, per stage: the same-phase Shepard density of the owned fluid (paper 001

@@ -112,6 +112,12 @@ static void add_op(struct engine *e, const char *name, void (*pass)(struct engin
                                          .once_per_step = once};
 }
 
+/* The particle volumes and the neighbour lists (the lists once per step). */
+static void add_volumes_and_lists(struct engine *e) {
+  add_op(e, "volumes m/rho of owned and halo particles", pass_volumes, 0, 0);
+  add_op(e, "neighbour lists of the owned fluid (once per step)", pass_neighbour_lists, 0, 1);
+}
+
 /* The terms this case needs (DESIGN.md data flow 3: what a scene does not use is not computed). */
 static unsigned case_features(const struct engine *e) {
   const struct case_def *c = e->c;
@@ -168,8 +174,7 @@ void engine_assemble(struct engine *e) {
   e->n_ops = 0;
   add_op(e, "halo: positions, velocities, densities, pressures", NULL, HF_POS | HF_VEL | HF_RHO | HF_P, 0);
   if (f & FEAT_SHEPARD) {   /* the pressure first: the wall ghosts interpolate it */
-    add_op(e, "volumes m/rho of owned and halo particles", pass_volumes, 0, 0);
-    add_op(e, "neighbour lists of the owned fluid (once per step)", pass_neighbour_lists, 0, 1);
+    add_volumes_and_lists(e);
     add_op(e, "Shepard density and pressure (delta-sph)", pass_shepard_density, 0, 0);
     add_op(e, "halo: Shepard densities, pressures", NULL, HF_RHO_SHEPARD | HF_P, 0);
   }
@@ -177,10 +182,7 @@ void engine_assemble(struct engine *e) {
     add_op(e, "wall ghosts: Shepard interpolation at mirror points", pass_wall_ghosts, 0, 0);
     add_op(e, "halo: wall ghost values", NULL, HF_VEL | HF_RHO | HF_P | HF_MASS, 0);
   }
-  if (!(f & FEAT_SHEPARD)) {
-    add_op(e, "volumes m/rho of owned and halo particles", pass_volumes, 0, 0);
-    add_op(e, "neighbour lists of the owned fluid (once per step)", pass_neighbour_lists, 0, 1);
-  }
+  if (!(f & FEAT_SHEPARD)) add_volumes_and_lists(e);
   if (f & FEAT_SURFACE) {
     add_op(e, "free surface: eigenvalue + umbrella detection, normals (once per step)", pass_free_surface, 0, 1);
     add_op(e, "halo: free-surface flags (once per step)", NULL, HF_SURFACE, 1);

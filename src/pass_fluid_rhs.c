@@ -85,8 +85,8 @@ static inline __attribute__((always_inline)) void fluid_sums(const struct engine
     const int rel = phase[j] == PHASE_WALL ? PAIR_WALL : (!PHASES || phase[j] == ph) ? PAIR_SAME : PAIR_OTHER;
     /* other phase: a fluid particle of another phase, or a ghost standing for one (rho0 of
      * another phase), so that fluid and ghost neighbours of a phase act alike */
-    const int other = PHASES && (rel == PAIR_OTHER || (rel == PAIR_WALL && rho[j] != rho0i));
-    double pj = weighted && other ? other_phase_pressure(pi, rhoi, pres[j], rho[j]) : pres[j];
+    const int other = weighted && (rel == PAIR_OTHER || (rel == PAIR_WALL && rho[j] != rho0i));
+    double pj = other ? other_phase_pressure(pi, rhoi, pres[j], rho[j]) : pres[j];
     double psum = pj + p_sign * pi;
     for (int d = 0; d < dim; d++) s.grad_p[d] += psum * fv * dx[d];
     if (DU) {

@@ -25,15 +25,19 @@ long visit_near(const struct engine *e, const double *xs, int with_walls, near_f
   return n;
 }
 
-/* Add fluid slot j with weight wv to the Shepard sums ctx of its phase. */
+/* Add weight wv times slot j's values to the sums a. */
+static void add_values(double *a, const struct parts *p, long j, double wv) {
+  a[SHEPARD_W] += wv;
+  a[SHEPARD_P] += wv * p->p[j];
+  a[SHEPARD_RHO] += wv * p->rho[j];
+  for (int d = 0; d < p->dim; d++) a[SHEPARD_U + d] += wv * p->v[d][j];
+}
+
+/* Add fluid slot j with weight wv to the Shepard sums ctx: all phases and its own. */
 static void add_shepard(void *ctx, const struct engine *e, long j, double wv) {
-  const struct parts *p = &e->p;
   struct shepard *s = ctx;
-  int ph = p->phase[j];
-  s->w[ph] += wv;
-  s->wp[ph] += wv * p->p[j];
-  s->wrho[ph] += wv * p->rho[j];
-  for (int d = 0; d < p->dim; d++) s->wu[ph][d] += wv * p->v[d][j];
+  add_values(s->all, &e->p, j, wv);
+  add_values(s->phase[e->p.phase[j]], &e->p, j, wv);
 }
 
 void shepard_at(const struct engine *e, const double *xs, struct shepard *s, long *pairs) {
@@ -44,23 +48,8 @@ void shepard_at(const struct engine *e, const double *xs, struct shepard *s, lon
 static int majority_phase(const struct engine *e, const struct shepard *s) {
   int best = 0;
   for (int ph = 1; ph < e->c->n_phases; ph++)
-    if (s->w[ph] > s->w[best]) best = ph;
+    if (s->phase[ph][SHEPARD_W] > s->phase[best][SHEPARD_W]) best = ph;
   return best;
-}
-
-/* The Shepard sums a ghost takes its values from, into src = {sum W V, and times p, rho, u}: with
- * the density-weighted interface pressure those of its majority phase ph only (the ghost stands
- * for that phase, theory section 4); with the paper's pair sum those of every phase (Marrone et
- * al. 2011: a ghost beside a water particle in air carries part of its pressure). */
-static void ghost_source(const struct engine *e, const struct shepard *s, int ph, double *src) {
-  int weighted = e->c->interface_pressure == IFACE_P_DENSITY_WEIGHTED;
-  for (int k = 0; k < 6; k++) src[k] = 0;
-  for (int q = weighted ? ph : 0; q < (weighted ? ph + 1 : e->c->n_phases); q++) {
-    src[0] += s->w[q];
-    src[1] += s->wp[q];
-    src[2] += s->wrho[q];
-    for (int d = 0; d < 3; d++) src[3 + d] += s->wu[q][d];
-  }
 }
 
 /* Velocity [m/s] and acceleration [m/s^2] of wall w at point x (zero for a fixed wall). */
@@ -80,14 +69,17 @@ static void ghost_from_shepard(struct engine *e, long k, const double *xs, const
   double u[3] = {0, 0, 0}, n[3], nn = 0, un = 0, pressure = 0, mid[3] = {0, 0, 0}, uw[3], aw[3];
   for (int d = 0; d < dim; d++) mid[d] = 0.5 * (xs[d] + p->x[d][k]);
   wall_kinematics(e, w, mid, uw, aw);
+  /* the sums the ghost takes its values from: with the density-weighted interface pressure its
+   * majority phase's only (the ghost stands for that phase, theory section 4); with the paper's
+   * pair sum every phase's (Marrone et al. 2011: a ghost beside a water particle in air carries
+   * part of its pressure) */
   int ph = majority_phase(e, s);
-  double src[6];   /* sum W V, and times p, rho, u */
-  ghost_source(e, s, ph, src);
-  if (src[0] > 0) {
-    double rho_star = src[2] / src[0];
-    pressure = src[1] / src[0];
+  const double *src = e->c->interface_pressure == IFACE_P_DENSITY_WEIGHTED ? s->phase[ph] : s->all;
+  if (src[SHEPARD_W] > 0) {
+    double rho_star = src[SHEPARD_RHO] / src[SHEPARD_W];
+    pressure = src[SHEPARD_P] / src[SHEPARD_W];
     for (int d = 0; d < dim; d++) {
-      u[d] = src[3 + d] / src[0];
+      u[d] = src[SHEPARD_U + d] / src[SHEPARD_W];
       pressure += rho_star * (e->c->gravity[d] - aw[d]) * (p->x[d][k] - xs[d]);
     }
   }
