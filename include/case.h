@@ -128,6 +128,7 @@ struct case_def {
   double interface_sharpness;   /* chi of the interface sharpness force (paper 000 Eq. 20), 0 = off */
   int limit_surface_shifting;   /* apply the 0.5 U_max limiter in the free-surface region too */
   double surface_tension;    /* sigma between the fluid phases (CSF, Adami et al. 2010) [N/m], 0 = off */
+  double wall_guard;         /* normal-velocity correction within this many dx of a wall, 0 = off */
   /* parallel */
   double repartition_threshold;  /* re-partition when (max-min)/mean load exceeds this */
   long repartition_every;        /* force a re-partition every N steps (0 = only on imbalance) */

@@ -120,6 +120,7 @@ struct engine {
   double *probe_buf;               /* the probes' samples of one row, sized at the first row */
   long probe_buf_len;
   int restarted;                   /* continues from a checkpoint */
+  long wall_guard_hits;            /* normal-velocity corrections by the wall guard on this rank */
 };
 
 /** Set up the engine for case c: generate particles (or, with `restart` non-NULL, read them and

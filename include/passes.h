@@ -96,4 +96,10 @@ void pass_interface_normals(struct engine *e);
  *  -sigma kappa n |grad chi| / rho added to du/dt of owned fluid particles (Brackbill et al. 1992). */
 void pass_surface_tension(struct engine *e);
 
+/** Wall guard, after every force of the stage (src/wall_guard.c): an owned fluid particle within
+ *  physics.wall_guard x dx of a wall's boundary (or inside its solid) loses the part of du/dt
+ *  (relative to the wall's acceleration) that points into the wall while it is not moving away
+ *  from it, and the part of its shifting velocity that points into the wall. */
+void pass_wall_guard(struct engine *e);
+
 #endif

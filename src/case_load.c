@@ -59,7 +59,7 @@ static const char *const PHYSICS_KEYS[] = {"delta", "artificial_viscosity", "aco
                                            "shifting", "u_max", "tensile_control", "free_surface",
                                            "surface_band", "interface_mode", "damper_form",
                                            "interface_sharpness", "limit_surface_shifting",
-                                           "interface_pressure", "surface_tension", NULL};
+                                           "interface_pressure", "surface_tension", "wall_guard", NULL};
 static const char *const INITIAL_KEYS[] = {"pressure", NULL};
 static const char *const PROBE_KEYS[] = {"name", "kind", "position", "diameter", "axis",
                                          "interpolation", "phase", NULL};
@@ -89,6 +89,7 @@ static const struct rule R_H_OVER_DX = {"a number > 0 and <= 10", 0, 1, 10, 0};
 /* Default density bands [min, max] / rho0 of the instability check: a liquid, a gas. */
 static const double LIQUID_BAND[2] = {0.5, 2.0}, GAS_BAND[2] = {0.1, 10.0};
 #define DT_MIN_FRACTION 1e-6   /* default time.dt_min / the acoustic step CFL h / max c0 */
+#define WALL_GUARD_DX 0.25     /* default physics.wall_guard [dx] */
 
 /* Loader state: where messages go and the dimension read so far. */
 struct ld {
@@ -812,7 +813,8 @@ static int read_physics(const struct map *root, struct case_def *c) {
       num(&ph, "interface_sharpness", &R_NONNEGATIVE, 0, &c->interface_sharpness) ||
       choice(&ph, "limit_surface_shifting", BOOL_NAMES, 0, &limit) ||
       choice(&ph, "interface_pressure", IFACE_P_NAMES, IFACE_P_SUM, &iface_p) ||
-      num(&ph, "surface_tension", &R_NONNEGATIVE, 0, &c->surface_tension))
+      num(&ph, "surface_tension", &R_NONNEGATIVE, 0, &c->surface_tension) ||
+      num(&ph, "wall_guard", &R_NONNEGATIVE, WALL_GUARD_DX, &c->wall_guard))
     return 1;
   c->shifting = (enum shifting_kind)shifting;
   c->tensile_control = tic;
@@ -1169,6 +1171,7 @@ static void put_tail(FILE *f, const struct case_def *c) {
   put_word(f, "  ", "limit_surface_shifting", BOOL_NAMES[c->limit_surface_shifting != 0]);
   put_word(f, "  ", "interface_pressure", IFACE_P_NAMES[c->interface_pressure]);
   put_num(f, "  ", "surface_tension", c->surface_tension);
+  put_num(f, "  ", "wall_guard", c->wall_guard);
   fputs("initial:\n", f);
   put_word(f, "  ", "pressure", PRESSURE_NAMES[c->initial_pressure]);
   put_list_key(f, "probes", c->n_probes);

@@ -10,6 +10,7 @@
 #include "partition.h"
 #include "redistribute.h"
 #include "signal_stop.h"
+#include "wall_guard.h"
 
 #define BALANCE_CHECK_EVERY 100 /* steps between load-balance checks (the timing window) */
 #define REPARTITION_MIN_GAP 500 /* steps between imbalance-triggered re-partitions */
@@ -276,6 +277,7 @@ static void report_end(const struct engine *e, int signo, long steps) {
 /* Advance one step with everything that follows it: migration, load balance, outputs. */
 static int step_and_output(struct engine *e) {
   int status = engine_step(e);
+  if (!status) wall_guard_apply(e);
   if (!status && e->step == 1) free_surface_auto(e);
   if (!status) status = engine_rebuild(e);
   if (!status) status = balance(e);

@@ -15,6 +15,7 @@ struct run_extras {
   double wall_seconds;        /* wall-clock time of the run so far [s] */
   long no_free_surface;       /* free_surface auto switched detection off */
   long finished;              /* the run reached time.end or time.max_steps */
+  long wall_guard_hits;       /* the wall guard's corrections on all ranks so far */
 };
 
 /* The /run numbers: engine fields and the extras, as named pointers (for writing and reading). */
@@ -31,14 +32,16 @@ static int run_numbers(struct engine *e, struct run_extras *x, struct hdf5_numbe
   v[n++] = (struct hdf5_number){"wall_seconds", &x->wall_seconds, NULL};
   v[n++] = (struct hdf5_number){"no_free_surface", NULL, &x->no_free_surface};
   v[n++] = (struct hdf5_number){"finished", NULL, &x->finished};
+  v[n++] = (struct hdf5_number){"wall_guard_hits", NULL, &x->wall_guard_hits};
   return n;
 }
 
 int engine_checkpoint_write(struct engine *e) {
   char path[1200], err[512];
   snprintf(path, sizeof path, "%s/checkpoint.h5", e->outdir);
-  struct run_extras x = {MPI_Wtime() - e->wall_start, e->no_free_surface, engine_finished(e)};
+  struct run_extras x = {MPI_Wtime() - e->wall_start, e->no_free_surface, engine_finished(e), 0};
   MPI_Bcast(&x.wall_seconds, 1, MPI_DOUBLE, 0, e->comm);   /* attributes: one value for all */
+  MPI_Allreduce(&e->wall_guard_hits, &x.wall_guard_hits, 1, MPI_LONG, MPI_SUM, e->comm);
   struct hdf5_number v[MAX_NUMBERS];
   struct checkpoint_extra extra = {run_numbers(e, &x, v), v, e->n_snapshots, e->snap_times,
                                    e->snap_counts};
@@ -146,6 +149,7 @@ static int restore(struct engine *e, const char *path, const struct snapshot_inf
   e->n_snapshots = extra.n_snapshots;
   e->no_free_surface = (int)x.no_free_surface;
   e->wall_start = MPI_Wtime() - x.wall_seconds;
+  e->wall_guard_hits = e->rank ? 0 : x.wall_guard_hits;   /* summed over the ranks in stats.csv */
   reschedule(e, old);
   if (e->rank == 0)
     printf("restart from %s: t = %.9g s, step %ld, %ld particles%s\n", path, e->time, e->step,

@@ -52,7 +52,7 @@ static void stats_header(const struct engine *e) {
             c->phases[ph].name, c->phases[ph].name, c->phases[ph].name);
   const char *axis = "xyz";
   for (int d = 0; d < c->dimension; d++) fprintf(e->stats, ",momentum_%c", axis[d]);
-  fprintf(e->stats, ",wall_seconds\n");
+  fprintf(e->stats, ",wall_seconds,wall_guard_hits\n");
   fflush(e->stats);
 }
 
@@ -158,12 +158,12 @@ static int write_snapshot(struct engine *e) {
 }
 
 /* One stats.csv row: per-phase kinetic energy, mass, volume sum m/rho and max |rho/rho0 - 1|,
- * momentum. */
+ * momentum, the wall guard's corrections since the start of the run. */
 static void write_stats(struct engine *e) {
   const struct case_def *c = e->c;
   const struct parts *p = &e->p;
   int np = c->n_phases, dim = p->dim;
-  double sum[3 * CASE_MAX_PHASES + 3] = {0}, dev[CASE_MAX_PHASES] = {0};
+  double sum[3 * CASE_MAX_PHASES + 4] = {0}, dev[CASE_MAX_PHASES] = {0};
   for (long i = 0; i < p->n_owned; i++) {
     int ph = p->phase[i];
     if (ph == PHASE_WALL) continue;
@@ -177,14 +177,15 @@ static void write_stats(struct engine *e) {
     sum[3 * ph + 2] += p->m[i] / p->rho[i];
     dev[ph] = fmax(dev[ph], fabs(p->rho[i] / c->phases[ph].rho0 - 1.0));
   }
-  MPI_Reduce(e->rank ? sum : MPI_IN_PLACE, sum, 3 * np + dim, MPI_DOUBLE, MPI_SUM, 0, e->comm);
+  sum[3 * np + dim] = (double)e->wall_guard_hits;
+  MPI_Reduce(e->rank ? sum : MPI_IN_PLACE, sum, 3 * np + dim + 1, MPI_DOUBLE, MPI_SUM, 0, e->comm);
   MPI_Reduce(e->rank ? dev : MPI_IN_PLACE, dev, np, MPI_DOUBLE, MPI_MAX, 0, e->comm);
   if (e->rank) return;
   fprintf(e->stats, "%ld,%.10g,%.6g", e->step, e->time, e->dt);
   for (int ph = 0; ph < np; ph++)
     fprintf(e->stats, ",%.10g,%.15g,%.12g,%.6g", sum[3 * ph], sum[3 * ph + 1], sum[3 * ph + 2], dev[ph]);
   for (int d = 0; d < dim; d++) fprintf(e->stats, ",%.10g", sum[3 * np + d]);
-  fprintf(e->stats, ",%.3f\n", MPI_Wtime() - e->wall_start);
+  fprintf(e->stats, ",%.3f,%.0f\n", MPI_Wtime() - e->wall_start, sum[3 * np + dim]);
   fflush(e->stats);
 }
 

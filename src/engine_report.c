@@ -165,9 +165,14 @@ static void print_summary(const struct engine *e, const struct run_summary *s) {
 
 void engine_report(struct engine *e, long steps, double loop_seconds) {
   struct run_summary s;
+  long guard_hits = 0;
   summarise(e, steps, loop_seconds, &s);
+  MPI_Reduce(&e->wall_guard_hits, &guard_hits, 1, MPI_LONG, MPI_SUM, 0, e->comm);
   if (e->rank == 0) {
     print_summary(e, &s);
+    if (guard_hits)
+      printf("  wall guard: %ld normal-velocity corrections of particles closing on a wall "
+             "(stats.csv column wall_guard_hits)\n", guard_hits);
     write_timings(e, &s);
   }
   free(s.per_rank);

@@ -198,6 +198,8 @@ void engine_assemble(struct engine *e) {
     add_op(e, "halo: interface normals", NULL, HF_INTERFACE_NORMAL, 0);
     add_op(e, "surface tension: curvature, CSF force", pass_surface_tension, 0, 0);
   }
+  if ((f & FEAT_WALLS) && e->c->wall_guard > 0)
+    add_op(e, "wall guard: no acceleration into a wall within the guard distance", pass_wall_guard, 0, 0);
   carry_op_totals(e, old, n_old);
   engine_work_reserve(e);
 }

@@ -1,26 +1,27 @@
 #!/usr/bin/env bash
 # Stability scene 3 (doc/stability.md): a violent impact. A water block (0.14 m x 0.1 m, c0w =
 # 60 m/s) moving at 6 m/s onto a vertical wall through a thin air layer (3 dx) in a closed
-# air-filled tank (paper 000 section 3.3 spirit).
-# XFAIL: the run stops with status 2 after about 0.0044 s, when an air particle of the cushion,
-# squeezed between the water (about 50 kPa) and wall ghosts whose pressure is interpolated from
-# the low-pressure air at their mirror points, is pushed through the first ghost layer (the same
-# at 1.5 and 3 m/s, with a 5 dx layer, without shifting and without tensile control:
-# doc/stability.md, "Light particles pushed into walls"). Asserted instead: the run stops with
-# exactly this check, naming an air particle, and the last good state is finite, has every
-# particle inside the walls and the initial masses, bit for bit.
+# air-filled tank (paper 000 section 3.3 spirit), to 0.03 s.
+# Asserted: exit 0; every value finite, no fluid particle beyond the walls by more than dx/2 or
+# outside the domain, masses bitwise constant, mechanical energy never above E0 + 0.05 M g dx
+# (tests/check_stability.py); the wall guard (physics.wall_guard, doc/theory.md §5) acted.
+# Negative control: with the guard off (physics.wall_guard: 0) the run stops with status 2 when an
+# air particle of the cushion, squeezed between the water and the wall, enters the wall, and the
+# last good state is finite, inside the walls, with the initial masses bit for bit.
 source "$(dirname "$0")/stability/run_scene.sh"
 scene impact 1
-if [ "$status" -eq 0 ]; then
-  echo "XPASS impact ran to the end: update doc/stability.md and make it a checked scene"
-  "$PYTHON" tests/check_stability.py "$out/impact" --dx 0.01 --tank 0,0,0.3,0.15 \
-    --energy-scale mgdx --energy-tol 0.05 || fail=1
-  exit $fail
-fi
+[ "$status" -eq 0 ] || { echo "FAIL impact: exit status $status, want 0"; exit 1; }
+"$PYTHON" tests/check_stability.py "$out/impact" --dx 0.01 --tank 0,0,0.3,0.15 \
+  --energy-scale mgdx --energy-tol 0.05 || fail=1
+hits=$(tail -n 1 "$out/impact/stats.csv" | awk -F, '{print $NF}')
+echo "wall guard corrections: $hits"
+[ "${hits:-0}" -gt 0 ] || { echo "FAIL impact: the wall guard never acted (wall_guard_hits $hits)"; fail=1; }
+
+scene impact 1 --set physics.wall_guard=0
 if [ "$status" -eq 2 ] && grep -qE 'unstable at step [0-9]+, t = [-0-9.e+]+ s, after the step: particle [0-9]+ \(phase 1\) .*: entered the solid of walls.0' "$out/impact.log"; then
-  xfail "impact at 6 m/s through a 3 dx air layer: exit status 2, an air particle entered the wall (known limit, doc/stability.md)"
+  echo "ok   without the guard: exit status 2, an air particle entered the wall (the negative control)"
 else
-  echo "FAIL impact: exit status $status, not the known failure"; exit 1
+  echo "FAIL impact without the guard: exit status $status, not the known failure"; exit 1
 fi
 "$PYTHON" - "$out/impact" <<'PY' || fail=1
 import sys, h5py, numpy as np

@@ -1,0 +1,143 @@
+/* test_wall_guard.c — the wall guard (src/wall_guard.c) on single particles placed by hand in a
+ * tank [0, 1] x [0, 1] with dx = 0.05 and physics.wall_guard = 0.25 (a guard distance of
+ * 0.0125 m):
+ *  1. fixed tank, after a step (wall_guard_apply): a particle 0.2 dx above the floor moving down
+ *     loses its normal velocity and keeps its tangential one; moving up, or 0.6 dx above the floor,
+ *     it is untouched; inside the floor's solid it loses the velocity that carries it deeper; near
+ *     the left wall the normal is x; the number of corrections is counted;
+ *  2. fixed tank, per stage (pass_wall_guard): the acceleration into the floor is removed for a
+ *     particle at rest or approaching, kept for one moving away; the inward shifting velocity is
+ *     removed in both cases;
+ *  3. a tank moving up at 0.2 pi m/s (sinusoid at t = 0): the velocity relative to the floor is
+ *     what counts, and the corrected particle moves with the floor; likewise the acceleration,
+ *     relative to the floor's (zero at t = 0 for a sinusoid started at its zero).
+ * Usage: test_wall_guard [TMPDIR] */
+#include <math.h>
+#include <stdio.h>
+#include "case_load.h"
+#include "check.h"
+#include "engine_test.h"
+#include "engine.h"
+#include "motion.h"
+#include "passes.h"
+#include "wall_guard.h"
+
+#define TOL 1e-14
+
+static const char *fixed_case =
+    "name: wall-guard-test\n"
+    "dimension: 2\n"
+    "resolution: {dx: 0.05}\n"
+    "time: {end: 1.0}\n"
+    "domain: {min: [-0.3, -0.3], max: [1.3, 1.3]}\n"
+    "phases:\n"
+    "  - {name: water, rho0: 1000, c0: 20, incompressible: true}\n"
+    "fluids:\n"
+    "  - {phase: water, box: {min: [0, 0], max: [1, 0.5]}}\n"
+    "walls:\n"
+    "  - {box: {min: [0, 0], max: [1, 1]}, slip: free}\n"
+    "physics: {wall_guard: 0.25, free_surface: off}\n"
+    "output: {progress_interval: 1000}\n";
+
+static const char *moving_case =
+    "name: wall-guard-moving\n"
+    "dimension: 2\n"
+    "resolution: {dx: 0.05}\n"
+    "time: {end: 1.0}\n"
+    "domain: {min: [-0.3, -0.3], max: [1.3, 1.5]}\n"
+    "phases:\n"
+    "  - {name: water, rho0: 1000, c0: 20, incompressible: true}\n"
+    "fluids:\n"
+    "  - {phase: water, box: {min: [0, 0], max: [1, 0.5]}}\n"
+    "walls:\n"
+    "  - {box: {min: [0, 0], max: [1, 1]}, slip: free,\n"
+    "     motion: {translation: {amplitude: [0, 0.1], period: 1.0}}}\n"
+    "physics: {wall_guard: 0.25, free_surface: off}\n"
+    "output: {progress_interval: 1000}\n";
+
+/* The first owned fluid particle (every rank owns some in these tests). */
+static long first_fluid(const struct engine *e) {
+  for (long i = 0; i < e->p.n_owned; i++)
+    if (e->p.phase[i] != PHASE_WALL) return i;
+  return -1;
+}
+
+/* Place particle i at (x, y) with velocity (u, v); zero its derivatives. */
+static void place(struct engine *e, long i, double x, double y, double u, double v) {
+  e->p.x[0][i] = x, e->p.x[1][i] = y;
+  e->p.v[0][i] = u, e->p.v[1][i] = v;
+  e->w.dv[0][i] = e->w.dv[1][i] = 0;
+  if (e->w.du[0]) e->w.du[0][i] = e->w.du[1][i] = 0;
+}
+
+/* After one wall_guard_apply with particle i alone placed: its velocity (u, v) and the count. */
+static void expect_after_step(struct engine *e, long i, double u, double v, long hits, const char *what) {
+  long n = wall_guard_apply(e);
+  CHECK(n == hits && fabs(e->p.v[0][i] - u) < TOL && fabs(e->p.v[1][i] - v) < TOL,
+        "%s: v = (%g, %g), %ld corrections; want (%g, %g), %ld", what, e->p.v[0][i], e->p.v[1][i], n, u, v, hits);
+}
+
+/* Park every owned fluid particle in the middle of the tank at rest (away from the guard). */
+static void park_all(struct engine *e) {
+  for (long i = 0; i < e->p.n_owned; i++)
+    if (e->p.phase[i] != PHASE_WALL) place(e, i, 0.5, 0.5, 0, 0);
+}
+
+static void fixed_tank(struct engine *e) {
+  long i = first_fluid(e);
+  park_all(e);
+  place(e, i, 0.5, 0.01, 1, -2);
+  expect_after_step(e, i, 1, 0, 1, "0.2 dx above the floor, moving down");
+  place(e, i, 0.5, 0.01, 1, 2);
+  expect_after_step(e, i, 1, 2, 0, "0.2 dx above the floor, moving up");
+  place(e, i, 0.5, 0.03, 1, -2);
+  expect_after_step(e, i, 1, -2, 0, "0.6 dx above the floor");
+  place(e, i, 0.5, -0.005, 0.5, -1);
+  expect_after_step(e, i, 0.5, 0, 1, "inside the floor's solid, moving deeper");
+  place(e, i, 0.005, 0.5, -3, 1);
+  expect_after_step(e, i, 0, 1, 1, "0.1 dx from the left wall, moving left");
+  CHECK(e->wall_guard_hits >= 3, "wall_guard_hits %ld", e->wall_guard_hits);
+
+  place(e, i, 0.5, 0.01, 0, 0);
+  e->w.dv[0][i] = 2, e->w.dv[1][i] = -50;
+  if (e->w.du[0]) e->w.du[0][i] = 0.1, e->w.du[1][i] = -0.2;
+  pass_wall_guard(e);
+  CHECK(e->w.dv[0][i] == 2 && e->w.dv[1][i] == 0, "at rest: dv/dt = (%g, %g), want (2, 0)", e->w.dv[0][i], e->w.dv[1][i]);
+  CHECK(e->w.du[0] && e->w.du[0][i] == 0.1 && e->w.du[1][i] == 0, "shifting velocity not clipped");
+  place(e, i, 0.5, 0.01, 0, 1);
+  e->w.dv[1][i] = -50;
+  pass_wall_guard(e);
+  CHECK(e->w.dv[1][i] == -50, "moving away: dv/dt_y = %g, want -50 (kept)", e->w.dv[1][i]);
+}
+
+static void moving_tank(struct engine *e, const struct case_def *c) {
+  long i = first_fluid(e);
+  double floor_speed = 0.1 * 2 * acos(-1.0);   /* A omega cos(0) */
+  motion_frame(&c->walls[0].motion, 0.0, &e->frames[0]);
+  park_all(e);
+  place(e, i, 0.5, 0.01, 0, 0.3);
+  expect_after_step(e, i, 0, floor_speed, 1, "moving floor overtaking the particle");
+  place(e, i, 0.5, 0.01, 0, 1.0);
+  expect_after_step(e, i, 0, 1.0, 0, "particle faster than the moving floor");
+  place(e, i, 0.5, 0.01, 0, floor_speed);
+  e->w.dv[1][i] = -3;   /* the floor's acceleration at t = 0 is 0: -3 is into it */
+  pass_wall_guard(e);
+  CHECK(fabs(e->w.dv[1][i]) < TOL, "moving floor: dv/dt_y = %g, want 0", e->w.dv[1][i]);
+}
+
+int main(int argc, char **argv) {
+  MPI_Init(&argc, &argv);
+  char dir[256];
+  snprintf(dir, sizeof dir, "%s/mpsph_wall_guard_XXXXXX", argc > 1 ? argv[1] : "/tmp");
+  struct case_def c;
+  struct engine e;
+  if (engine_test_scratch(dir, sizeof dir) || engine_test_start(dir, fixed_case, &c, &e)) return 1;
+  fixed_tank(&e);
+  engine_close_output(&e);
+  engine_free(&e);
+  struct case_def cm;
+  struct engine em;
+  if (engine_test_start(dir, moving_case, &cm, &em)) return 1;
+  moving_tank(&em, &cm);
+  return engine_test_finish(&em, dir, "test_wall_guard");
+}
