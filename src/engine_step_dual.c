@@ -9,8 +9,8 @@
  * every phase updated before any force is computed (Jacobi order, notes 1.10). The drho/dt of the
  * first half is the one of the previous sub-step's second half (notes A13); at the start of an
  * advection step it is computed afresh from the re-initialised state, so that a step depends only
- * on the particle state (checkpoints restart bitwise). The wall ghosts are re-interpolated at
- * every force evaluation, the halo refreshed before it. */
+ * on the particle state (checkpoints restart bitwise);
+ * the halo refreshed before every force evaluation. */
 #include <math.h>
 #include <string.h>
 #include "eos.h"
@@ -21,7 +21,7 @@
 #define TRANSPORT_COEFFICIENT 10.0   /* p0_tv = 10 rho0_light U^2 (Eq. 12) */
 
 /* The operations, in the order of the pipeline. */
-enum { OP_STATE_HALO, OP_WALL_GHOSTS, OP_GHOST_HALO, OP_VOLUMES, OP_LISTS, OP_REINIT, OP_REINIT_HALO,
+enum { OP_STATE_HALO, OP_VOLUMES, OP_LISTS, OP_REINIT, OP_REINIT_HALO,
        OP_TRANSPORT, OP_MOMENTUM, OP_CONTINUITY, N_DUAL_OPS };
 
 static const struct {
@@ -31,8 +31,6 @@ static const struct {
   unsigned feature;   /* present only with this feature (0: always) */
 } dual_table[N_DUAL_OPS] = {
     {"halo: positions, velocities, densities, pressures", NULL, HF_POS | HF_VEL | HF_RHO | HF_P, 0},
-    {"wall ghosts: Shepard interpolation at mirror points", pass_wall_ghosts, 0, FEAT_WALLS},
-    {"halo: wall ghost values", NULL, HF_VEL | HF_RHO | HF_P | HF_MASS, FEAT_WALLS},
     {"volumes m/rho of owned and halo particles", pass_volumes, 0, 0},
     {"neighbour lists of the owned fluid (once per advection step)", pass_neighbour_lists, 0, 0},
     {"density re-initialisation, heavy and light phases (once per advection step)", pass_density_reinit, 0, 0},
@@ -59,7 +57,8 @@ static void run(struct engine *e, int id) {
   if (e->dual_ops[id] >= 0) engine_run_op(e, e->dual_ops[id]);
 }
 
-/* Halo, wall ghosts and volumes of the current state: what the pair passes read. */
+/* Halo and volumes of the current state: what the pair passes read (the wall ghosts' dummy
+ * states are made in the pair loops). */
 static void refresh(struct engine *e) {
   for (int id = OP_STATE_HALO; id <= OP_VOLUMES; id++) run(e, id);
 }

@@ -8,8 +8,10 @@
  * r_j)/r_ij, and the interface velocity of Eq. 9 with the sign of notes seed-002 A1,
  *   v*_ij = (Z_i v_i + Z_j v_j)/(Z_i + Z_j) - e_ij (p_i - p_j)/(Z_i + Z_j),   Z = rho c0,
  * so that (v_i - v*_ij).grad_i W_ij = F_ij [Z_j v_ij.(r_i - r_j) + r_ij (p_i - p_j)]/(Z_i + Z_j).
- * A wall ghost j is the one-sided dummy state of i's phase (notes 1.7): its interpolated pressure
- * and velocity, the density of i's EOS at that pressure, i's sound speed and viscosity.
+ * A wall ghost j (fixed walls) carries the one-sided dummy state of i (Eq. 20 with the corrections
+ * A2, A3 of the notes): p_j = p_i + rho_i max(0, a_i.(r_j - r_i)), a_i = g + f_potential, the density
+ * of i's EOS at p_j, i's sound speed and viscosity, and the velocity -v_i (no slip) or v_i with its
+ * component along the ghost's mirror direction n reversed (free slip), with volume dx^dim.
  * Transport velocity (Eq. 12, light phases, notes A10): a_tv,i = -(2 p0_tv/rho_i) sum_j V_j grad_i W_ij. */
 #include <math.h>
 #include "eos.h"
@@ -20,8 +22,23 @@
 struct rcentre {
   long i;
   int phase;
-  double x[3], v[3], rho, p, z, c, eta;
+  double x[3], v[3], a[3], rho, p, z, c, eta;
 };
+
+/* The dummy pressure [Pa] and velocity vj [m/s] of wall ghost j for particle i, dx = r_i - r_j. */
+static inline double wall_dummy(const struct engine *e, const struct rcentre *ci, long j, const double *dx,
+                                double *vj, const int dim) {
+  const struct parts *p = &e->p;
+  double head = 0, n2 = 0, vn = 0;
+  for (int d = 0; d < dim; d++) {
+    head -= ci->a[d] * dx[d];
+    n2 += p->mirror[d][j] * p->mirror[d][j];
+    vn += ci->v[d] * p->mirror[d][j];
+  }
+  int no_slip = e->c->walls[p->wall[j]].slip == SLIP_NO;
+  for (int d = 0; d < dim; d++) vj[d] = no_slip ? -ci->v[d] : ci->v[d] - 2.0 * vn * p->mirror[d][j] / n2;
+  return ci->p + ci->rho * fmax(0.0, head);
+}
 
 /* The Riemann sums of i: the momentum sums (pressure, viscous) when MOMENTUM, else the continuity
  * sum; dim is a compile-time constant of each specialisation. */
@@ -39,28 +56,36 @@ static inline __attribute__((always_inline)) void riemann_sums(const struct engi
   long n = 0;
   struct neighbours it = *nb;
   for (long j; neighbours_next(&it, &j);) {
-    double dx[3], r2 = 0, vdx = 0;
+    double dx[3], r2 = 0, vj[3] = {0, 0, 0}, vdx = 0;
     for (int d = 0; d < dim; d++) {
       dx[d] = ci->x[d] - x[d][j];
       r2 += dx[d] * dx[d];
-      vdx += (ci->v[d] - v[d][j]) * dx[d];
     }
     if (r2 >= support2 || r2 <= 0) continue;
     n++;
     const int wall = phase[j] == PHASE_WALL;
-    const double fv = kernel_f(&e->kern, r2) * vol[j], r = sqrt(r2);
-    const double rhoj = wall ? eos_density(&phases[ci->phase], pres[j]) : rho[j];
-    const double cj = wall ? ci->c : phases[phase[j]].c0, zj = rhoj * cj;
+    double pj = pres[j], rhoj = rho[j], cj, etaj;
+    if (wall) {
+      pj = wall_dummy(e, ci, j, dx, vj, dim);
+      rhoj = eos_density(&phases[ci->phase], pj);
+      cj = ci->c;
+      etaj = ci->eta;
+    } else {
+      for (int d = 0; d < dim; d++) vj[d] = v[d][j];
+      cj = phases[phase[j]].c0;
+      etaj = phases[phase[j]].viscosity;
+    }
+    for (int d = 0; d < dim; d++) vdx += (ci->v[d] - vj[d]) * dx[d];
+    const double fv = kernel_f(&e->kern, r2) * (wall ? e->vol0 : vol[j]), r = sqrt(r2), zj = rhoj * cj;
     if (MOMENTUM) {
-      double pstar = riemann_pressure(ci->z, ci->p, zj, pres[j], -vdx / r, (ci->z + zj) / (ci->rho + rhoj));
-      double etaj = wall ? ci->eta : phases[phase[j]].viscosity;
+      double pstar = riemann_pressure(ci->z, ci->p, zj, pj, -vdx / r, (ci->z + zj) / (ci->rho + rhoj));
       double eta = ci->eta + etaj > 0 ? 2.0 * ci->eta * etaj / (ci->eta + etaj) : 0.0;
       for (int d = 0; d < dim; d++) {
         gp[d] += pstar * fv * dx[d];
-        vs[d] += eta * fv * (ci->v[d] - v[d][j]);
+        vs[d] += eta * fv * (ci->v[d] - vj[d]);
       }
     } else {
-      dr += fv * (zj * vdx + r * (ci->p - pres[j])) / (ci->z + zj);
+      dr += fv * (zj * vdx + r * (ci->p - pj)) / (ci->z + zj);
     }
   }
   for (int d = 0; d < dim; d++) {
@@ -80,7 +105,9 @@ static void centre_of(const struct engine *e, long i, struct rcentre *ci) {
   for (int d = 0; d < 3; d++) {
     ci->x[d] = d < p->dim ? p->x[d][i] : 0.0;
     ci->v[d] = d < p->dim ? p->v[d][i] : 0.0;
+    ci->a[d] = 0.0;
   }
+  body_acceleration(e, i, ci->a);
   ci->rho = p->rho[i];
   ci->p = p->p[i];
   ci->c = f->c0;
@@ -101,11 +128,10 @@ static void sums_of(struct engine *e, const struct rcentre *ci, const struct nei
 /* du/dt of fluid particle i. */
 static void momentum_of(struct engine *e, long i, const struct neighbours *nb) {
   struct rcentre ci;
-  double grad_p[3], visc[3], drho, g[3];
+  double grad_p[3], visc[3], drho;
   centre_of(e, i, &ci);
   sums_of(e, &ci, nb, grad_p, visc, &drho, 1);
-  body_acceleration(e, i, g);
-  for (int d = 0; d < e->p.dim; d++) e->w.dv[d][i] = 2.0 * (visc[d] - grad_p[d]) / ci.rho + g[d];
+  for (int d = 0; d < e->p.dim; d++) e->w.dv[d][i] = 2.0 * (visc[d] - grad_p[d]) / ci.rho + ci.a[d];
 }
 
 /* drho/dt of fluid particle i. */
