@@ -12,7 +12,11 @@
  *     term -(1/rho_i) sum_j V_j (p_i + p_j) grad_i W_ij and drho/dt equals rho_i sum_j V_j v_ij.grad_i W_ij
  *     + (1/c) sum_j V_j (p_i - p_j) r_ij F_ij, both summed here by brute force, to round-off;
  *  4. random velocities and densities in both phases: sum_i m_i du_i/dt = 0 to round-off;
- *  5. the dual stepper on one phase moving uniformly at speed U (no force acts): the advection step
+ *  5. walls: one phase at rest at a uniform pressure p_b in a closed tank (no gravity) on the
+ *     undisturbed lattice; the ghosts carry each particle's dummy state (p_j = p_i, v_j = 0), so
+ *     p*_ij = p_i and du/dt = -(2 p_i/rho_i) sum_j V_j grad_i W_ij = 0 and drho/dt = 0 to round-off
+ *     for every particle, those beside the walls and in the corners included;
+ *  6. the dual stepper on one phase moving uniformly at speed U (no force acts): the advection step
  *     is 0.25 h / u_max for U << u_max and the cell-skin limit B / U for U >> u_max (B = 0.75 of
  *     the allowed motion), 2B / (U + sqrt(U^2 + 2 a B)) with a transport acceleration a; one
  *     advection step takes ceil(dt_ad / dt_ac) acoustic sub-steps, dt_ac = cfl h / (c0 + U), and
@@ -59,6 +63,24 @@ static const char *one_phase_case =
     "  - {name: water, rho0: 1000, c0: 200, gamma: 1, incompressible: true}\n"
     "fluids:\n"
     "  - {phase: water, box: {min: [0, 0], max: [1, 1]}}\n"
+    "physics: {u_max: 2}\n"
+    "initial: {pressure: zero}\n"
+    "output: {progress_interval: 1000}\n";
+
+static const char *wall_case =
+    "name: riemann-wall-test\n"
+    "dimension: 2\n"
+    "scheme: riemann\n"
+    "kernel: wendland-c2\n"
+    "resolution: {dx: 0.05, h_over_dx: 1.3}\n"
+    "time: {end: 1.0, cfl: 0.6}\n"
+    "domain: {min: [-0.5, -0.5], max: [1.5, 1.5]}\n"
+    "phases:\n"
+    "  - {name: water, rho0: 1000, c0: 20, gamma: 1, incompressible: true, p_background: 5000}\n"
+    "fluids:\n"
+    "  - {phase: water, box: {min: [0, 0], max: [1, 1]}}\n"
+    "walls:\n"
+    "  - {box: {min: [0, 0], max: [1, 1]}, slip: no}\n"
     "physics: {u_max: 2}\n"
     "initial: {pressure: zero}\n"
     "output: {progress_interval: 1000}\n";
@@ -183,6 +205,21 @@ static void check_momentum(struct engine *e) {
     CHECK(fabs(sum[d]) <= 1e-13 * sum[2 + d], "momentum %c: %g, scale %g", "xy"[d], sum[d], sum[2 + d]);
 }
 
+static void check_walls(struct engine *e) {
+  set_and_rebuild(e, 0);
+  run_pass(e, "Riemann momentum");
+  run_pass(e, "Riemann continuity");
+  double worst[2] = {0, 0}, scale = 2 * 5000 / 1000.0 / e->h;   /* 2 p / (rho h) */
+  for (long i = 0; i < e->p.n_owned; i++) {
+    if (e->p.phase[i] == PHASE_WALL) continue;
+    worst[0] = fmax(worst[0], hypot(e->w.dv[0][i], e->w.dv[1][i]) / scale);
+    worst[1] = fmax(worst[1], fabs(e->w.drho[i]));
+  }
+  MPI_Allreduce(MPI_IN_PLACE, worst, 2, MPI_DOUBLE, MPI_MAX, e->comm);
+  if (e->rank == 0) printf("walls, uniform pressure at rest: |du/dt| / (2p/(rho h)) %.3g, |drho/dt| %.3g\n", worst[0], worst[1]);
+  CHECK(worst[0] <= 1e-13 && worst[1] == 0, "walls at rest: du/dt %g, drho/dt %g", worst[0], worst[1]);
+}
+
 /* Every fluid particle at rest density with velocity (u, 0). */
 static void uniform_flow(struct engine *e, double u) {
   struct parts *p = &e->p;
@@ -226,9 +263,12 @@ int main(int argc, char **argv) {
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   if (rank == 0) check_solver();
   char dir[256] = "/tmp/mpsph-test-riemann-XXXXXX", dir1[256] = "/tmp/mpsph-test-riemann1-XXXXXX";
-  if (engine_test_scratch(dir, sizeof dir) || engine_test_scratch(dir1, sizeof dir1)) return 1;
-  static struct case_def c, c1;
-  struct engine e, e1;
+  char dir2[256] = "/tmp/mpsph-test-riemann2-XXXXXX";
+  if (engine_test_scratch(dir, sizeof dir) || engine_test_scratch(dir1, sizeof dir1) ||
+      engine_test_scratch(dir2, sizeof dir2))
+    return 1;
+  static struct case_def c, c1, c2;
+  struct engine e, e1, e2;
   if (engine_test_start(dir, two_phase_case, &c, &e)) return check_report("test_riemann");
   CHECK((e.features & FEAT_RIEMANN) && (e.features & FEAT_TRANSPORT_VELOCITY) && !(e.features & (FEAT_SHIFT | FEAT_DAMPER | FEAT_TIC)),
         "riemann pipeline: its own terms only, transport velocity with a light phase");
@@ -237,13 +277,17 @@ int main(int argc, char **argv) {
   check_momentum(&e);
   engine_close_output(&e);
   engine_free(&e);
+  if (engine_test_start(dir2, wall_case, &c2, &e2)) return check_report("test_riemann");
+  check_walls(&e2);
+  engine_close_output(&e2);
+  engine_free(&e2);
   if (engine_test_start(dir1, one_phase_case, &c1, &e1)) return check_report("test_riemann");
   CHECK(!(e1.features & FEAT_TRANSPORT_VELOCITY), "one phase: no transport velocity");
   check_stepper(&e1);
   if (rank == 0) {
-    char cmd[300];
-    snprintf(cmd, sizeof cmd, "rm -rf '%s'", dir);
-    if (system(cmd)) printf("could not remove %s\n", dir);
+    char cmd[600];
+    snprintf(cmd, sizeof cmd, "rm -rf '%s' '%s'", dir, dir2);
+    if (system(cmd)) printf("could not remove %s, %s\n", dir, dir2);
   }
   return engine_test_finish(&e1, dir1, "test_riemann");
 }
