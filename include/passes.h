@@ -103,7 +103,8 @@ static inline void body_acceleration(const struct engine *e, long i, double *f) 
   for (int d = 0; d < e->p.dim; d++) f[d] = c->gravity[d] - w2 * (e->p.x[d][i] - c->potential_centre[d]);
 }
 
-/** Scheme riemann: 1 if phase ph is a light phase (a phase with a larger rho0 exists). */
+/** Scheme riemann: 1 if phase ph is a light phase: a gas (not `incompressible`) and a phase with a
+ *  larger rho0 exists. */
 int riemann_light_phase(const struct case_def *c, int ph);
 
 /** Sum of W(|r|) over the nodes r of the lattice of spacing dx [m], r = 0 included [1/m^dim]. */

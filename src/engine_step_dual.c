@@ -63,59 +63,68 @@ static void refresh(struct engine *e) {
   for (int id = OP_STATE_HALO; id <= OP_VOLUMES; id++) run(e, id);
 }
 
-/* Global maxima over the owned fluid of |v| [m/s] (of the light phases only with light_only) and of
- * |dv| (the work acceleration) [m/s^2]. */
-static void fluid_maxima(struct engine *e, int light_only, double *v_max, double *a_max) {
+/* Global maxima over the owned fluid (of the light phases only with light_only) of |v| [m/s], of
+ * |dv| (the work acceleration) [m/s^2] and of the displacement |r - r0| since the start of the
+ * advection step [m], into m[0..2]. */
+static void fluid_maxima(struct engine *e, int light_only, double *m) {
   const struct parts *p = &e->p;
-  double m[2] = {0, 0};
+  m[0] = m[1] = m[2] = 0;
   for (long i = 0; i < p->n_owned; i++) {
     if (p->phase[i] == PHASE_WALL || (light_only && !riemann_light_phase(e->c, p->phase[i]))) continue;
-    double v2 = 0, a2 = 0;
+    double q[3] = {0, 0, 0};
     for (int d = 0; d < p->dim; d++) {
-      v2 += p->v[d][i] * p->v[d][i];
-      a2 += e->w.dv[d][i] * e->w.dv[d][i];
+      double s = p->x[d][i] - e->w.x0[d][i];
+      q[0] += p->v[d][i] * p->v[d][i];
+      q[1] += e->w.dv[d][i] * e->w.dv[d][i];
+      q[2] += s * s;
     }
-    if (!(v2 <= m[0])) m[0] = v2;   /* NaN propagates */
-    if (!(a2 <= m[1])) m[1] = a2;
+    for (int k = 0; k < 3; k++)
+      if (!(q[k] <= m[k])) m[k] = q[k];   /* NaN propagates */
   }
-  MPI_Allreduce(MPI_IN_PLACE, m, 2, MPI_DOUBLE, MPI_MAX, e->comm);
-  *v_max = sqrt(m[0]);
-  *a_max = sqrt(m[1]);
+  MPI_Allreduce(MPI_IN_PLACE, m, 3, MPI_DOUBLE, MPI_MAX, e->comm);
+  for (int k = 0; k < 3; k++) m[k] = sqrt(m[k]);
 }
+
+/* The motion allowance of an advection step: a fraction of half the cell skin [m]. */
+static double motion_budget(const struct engine *e) { return DUAL_MOTION_SAFETY * engine_shift_max(e); }
 
 double dual_advection_dt(struct engine *e, double a_tv) {
   const struct case_def *c = e->c;
-  double v_max, a_unused;
-  fluid_maxima(e, 0, &v_max, &a_unused);
-  double dt = DUAL_ADVECTION_CFL * e->h / fmax(c->u_max, v_max);
+  double m[3];
+  fluid_maxima(e, 0, m);
+  double v_max = m[0], dt = DUAL_ADVECTION_CFL * e->h / fmax(c->u_max, v_max);
   for (int ph = 0; ph < c->n_phases; ph++)
     if (c->phases[ph].viscosity > 0)
       dt = fmin(dt, DUAL_ADVECTION_CFL * e->h * e->h * c->phases[ph].rho0 / c->phases[ph].viscosity);
   /* motion v dt + a_tv dt^2 / 2 within the allowance B: dt = 2B / (v + sqrt(v^2 + 2 a_tv B)) */
-  double b = DUAL_MOTION_SAFETY * engine_shift_max(e), root = v_max + sqrt(v_max * v_max + 2.0 * a_tv * b);
+  double b = motion_budget(e), root = v_max + sqrt(v_max * v_max + 2.0 * a_tv * b);
   if (root > 0) dt = fmin(dt, 2.0 * b / root);
   return dt;
 }
 
+/* The acoustic sub-step [s] from the maxima m of fluid_maxima. */
+static double acoustic_dt(const struct engine *e, const double *m) { return e->c->cfl * e->h / (e->c_max + m[0]); }
+
 double dual_acoustic_dt(struct engine *e) {
-  double v_max, a_unused;
-  fluid_maxima(e, 0, &v_max, &a_unused);
-  return e->c->cfl * e->h / (e->c_max + v_max);
+  double m[3];
+  fluid_maxima(e, 0, m);
+  return acoustic_dt(e, m);
 }
 
 /* The transport-velocity background pressure 10 rho0 U^2 of the light phase (the largest light
  * rho0), U the largest light-phase speed, at least physics.u_max (notes A11) [Pa]; its largest
  * acceleration into *a_tv [m/s^2] (dv holds the accelerations). */
 static void transport_velocity(struct engine *e, double *a_tv) {
-  double rho0 = 0, u, unused;
+  double rho0 = 0, m[3];
   for (int ph = 0; ph < e->c->n_phases; ph++)
     if (riemann_light_phase(e->c, ph)) rho0 = fmax(rho0, e->c->phases[ph].rho0);
-  fluid_maxima(e, 1, &u, &unused);
-  u = fmax(u, e->c->u_max);
+  fluid_maxima(e, 1, m);
+  double u = fmax(m[0], e->c->u_max);
   e->tv_pressure = TRANSPORT_COEFFICIENT * rho0 * u * u;
   run(e, OP_VOLUMES);   /* of the re-initialised densities */
   run(e, OP_TRANSPORT);
-  fluid_maxima(e, 0, &unused, a_tv);
+  fluid_maxima(e, 0, m);
+  *a_tv = m[1];
 }
 
 /* Positions r += scale dv (transport shift) or r += scale v of the owned fluid. */
@@ -197,10 +206,17 @@ int engine_step_dual(struct engine *e) {
   double tau = 0;
   int last = 0;
   for (e->n_acoustic = 0; !last; e->n_acoustic++) {
-    double dt = dual_acoustic_dt(e);
+    double m[3];
+    fluid_maxima(e, 0, m);
+    double dt = acoustic_dt(e, m);
     if (check_step(e, dt, "acoustic")) return 2;
     last = e->dt - tau <= dt * (1.0 + 1e-12);   /* no sub-step of a rounding error at the end */
-    e->dt_acoustic = last ? e->dt - tau : dt;
+    double step = last ? e->dt - tau : dt;
+    if (e->n_acoustic && m[2] + step * (m[0] + m[1] * step) > motion_budget(e) * (1.0 + 1e-9)) {
+      e->dt = tau;   /* the next sub-step could leave the cell skin: end the advection step here */
+      break;
+    }
+    e->dt_acoustic = step;
     if (acoustic_substep(e, e->dt_acoustic)) return 2;
     tau += e->dt_acoustic;
     e->stage_time = e->time + tau;

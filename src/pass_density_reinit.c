@@ -1,5 +1,6 @@
 /* pass_density_reinit.c — density re-initialisation of scheme riemann, once per advection step
  * (paper 002 Eqs. 10-11, notes seed-002 section 1.5, single resolution):
+ * (light: a gas phase, i.e. not `incompressible`, lighter than another phase; heavy: every other)
  *   heavy phase i (free-surface type, the light phases ignored):
  *     rho_sum = rho0_i (W(0) + sum_{j heavy or wall} W_ij) / sigma0,
  *     rho_i   = rho_sum + max(0, rho*_i - rho_sum) rho0_i / rho*_i,
@@ -25,6 +26,7 @@ double lattice_kernel_sum(const struct kernel *k, double dx) {
 }
 
 int riemann_light_phase(const struct case_def *c, int ph) {
+  if (c->phases[ph].incompressible) return 0;
   for (int k = 0; k < c->n_phases; k++)
     if (c->phases[k].rho0 > c->phases[ph].rho0) return 1;
   return 0;
