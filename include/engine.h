@@ -44,7 +44,9 @@ enum {
   FEAT_SHARPNESS = 64,     /* interface sharpness force */
   FEAT_CENTRAL = 128,      /* quadratic potential body force */
   FEAT_SURFACE_TENSION = 256,  /* CSF surface tension between the fluid phases */
-  FEAT_SHEPARD = 512       /* scheme delta-sph: same-phase Shepard density and the pressure from it */
+  FEAT_SHEPARD = 512,      /* scheme delta-sph: same-phase Shepard density and the pressure from it */
+  FEAT_RIEMANN = 4096,     /* scheme riemann: Riemann pair terms, density re-initialisation, dual time stepping */
+  FEAT_TRANSPORT_VELOCITY = 8192   /* scheme riemann with a light phase: its transport-velocity shift */
 };
 
 /** Work arrays of the scheme, sized to the particle capacity (those read at halo slots) or to
@@ -121,6 +123,12 @@ struct engine {
   long probe_buf_len;
   int restarted;                   /* continues from a checkpoint */
   long wall_guard_hits;            /* normal-velocity corrections by the wall guard on this rank */
+  /* scheme riemann (engine_step_dual.c) */
+  double lattice_w_sum;            /* sum of W over the undisturbed lattice, self included [1/m^dim] */
+  double tv_pressure;              /* background pressure of the transport velocity this step [Pa] */
+  double dt_acoustic;              /* the last acoustic sub-step [s] */
+  long n_acoustic;                 /* acoustic sub-steps of the last advection step */
+  int dual_ops[ENGINE_MAX_OPS];    /* index in ops of each of its operations, -1 when absent */
 };
 
 /** Set up the engine for case c: generate particles (or, with `restart` non-NULL, read them and
@@ -150,8 +158,29 @@ void engine_report_particle(const struct engine *e, long i, const char *what);
 /** Free everything. */
 void engine_free(struct engine *e);
 
-/** Advance one RK4 step (all stages, dt from the first stage). Returns 0 or 2 if a check tripped. */
+/** Advance one RK4 step (all stages, dt from the first stage), or with scheme riemann one
+ *  advection step (engine_step_dual). Returns 0 or 2 if a check tripped. */
 int engine_step(struct engine *e);
+
+/** Scheme riemann: one advection step of the dual-criteria time stepping (paper 002 section 2.5):
+ *  density re-initialisation, transport-velocity shift of the light phases, then position-Verlet
+ *  acoustic sub-steps up to the advection step e->dt. Returns 0 or 2 if a check tripped. */
+int engine_step_dual(struct engine *e);
+
+/** Scheme riemann: the operations of its pipeline (run by engine_step_dual). */
+void engine_assemble_dual(struct engine *e);
+
+/** Scheme riemann: the advection step 0.25 h / U (U the largest fluid speed, at least
+ *  physics.u_max; h^2/(4 nu) with viscosity) cut so that the particles' motion in it, with the
+ *  largest transport-velocity shift of acceleration a_tv [m/s^2], stays within the cell skin
+ *  [s]. Collective. */
+double dual_advection_dt(struct engine *e, double a_tv);
+
+/** Scheme riemann: the acoustic sub-step time.cfl h / (c_max + |v|_max) [s]. Collective. */
+double dual_acoustic_dt(struct engine *e);
+
+/** Run operation k of the pipeline (a pass or a halo update), timed. */
+void engine_run_op(struct engine *e, int k);
 
 /** After an RK stage: stop (2 on every rank) if an owned fluid particle has a non-finite
  *  derivative (drho/dt, du/dt, shifting velocity), else 0. Collective. */

@@ -102,4 +102,33 @@ void pass_surface_tension(struct engine *e);
  *  from it, and the part of its shifting velocity that points into the wall. */
 void pass_wall_guard(struct engine *e);
 
+/** Body force per unit mass at particle i: gravity and the quadratic potential [m/s^2]. */
+static inline void body_acceleration(const struct engine *e, long i, double *f) {
+  const struct case_def *c = e->c;
+  double w2 = c->potential_omega * c->potential_omega;
+  for (int d = 0; d < e->p.dim; d++) f[d] = c->gravity[d] - w2 * (e->p.x[d][i] - c->potential_centre[d]);
+}
+
+/** Scheme riemann: 1 if phase ph is a light phase: a gas (not `incompressible`) and a phase with a
+ *  larger rho0 exists. */
+int riemann_light_phase(const struct case_def *c, int ph);
+
+/** Sum of W(|r|) over the nodes r of the lattice of spacing dx [m], r = 0 included [1/m^dim]. */
+double lattice_kernel_sum(const struct kernel *k, double dx);
+
+/** Scheme riemann, once per advection step: density re-initialisation of the owned fluid (paper
+ *  002 Eqs. 10-11) and the pressure from it. */
+void pass_density_reinit(struct engine *e);
+
+/** Scheme riemann: du/dt of the owned fluid from the Riemann pressure, viscosity and body forces
+ *  (paper 002 Eq. 6). */
+void pass_riemann_momentum(struct engine *e);
+
+/** Scheme riemann: drho/dt of the owned fluid with the Riemann interface velocity (Eqs. 6, 9). */
+void pass_riemann_continuity(struct engine *e);
+
+/** Scheme riemann: the transport-velocity acceleration -(2 p0_tv / rho_i) sum_j V_j grad_i W_ij of
+ *  the owned light-phase particles into dv (0 for the heavy phase) [m/s^2] (Eq. 12). */
+void pass_transport_acceleration(struct engine *e);
+
 #endif

@@ -118,9 +118,19 @@ static void add_volumes_and_lists(struct engine *e) {
   add_op(e, "neighbour lists of the owned fluid (once per step)", pass_neighbour_lists, 0, 1);
 }
 
+/* Scheme riemann: its own terms, with the walls, the potential and (with a light phase) the
+ * transport velocity; the delta-plus options of the case do not apply. */
+static unsigned riemann_features(const struct case_def *c) {
+  unsigned f = FEAT_RIEMANN | (c->n_walls ? FEAT_WALLS : 0) | (c->potential_omega > 0 ? FEAT_CENTRAL : 0);
+  for (int ph = 0; ph < c->n_phases; ph++)
+    if (riemann_light_phase(c, ph)) f |= FEAT_TRANSPORT_VELOCITY;
+  return f;
+}
+
 /* The terms this case needs (DESIGN.md data flow 3: what a scene does not use is not computed). */
 static unsigned case_features(const struct engine *e) {
   const struct case_def *c = e->c;
+  if (c->scheme == SCHEME_RIEMANN) return riemann_features(c);
   unsigned f = 0;
   int liquid = 0;
   for (int ph = 0; ph < c->n_phases; ph++) liquid |= c->phases[ph].incompressible;
@@ -172,6 +182,12 @@ void engine_assemble(struct engine *e) {
   damper_coefficients(e);
   interface_table(e->c->interface_mode, e->iface);
   e->n_ops = 0;
+  if (f & FEAT_RIEMANN) {   /* its own pipeline, run by engine_step_dual */
+    engine_assemble_dual(e);
+    carry_op_totals(e, old, n_old);
+    engine_work_reserve(e);
+    return;
+  }
   add_op(e, "halo: positions, velocities, densities, pressures", NULL, HF_POS | HF_VEL | HF_RHO | HF_P, 0);
   if (f & FEAT_SHEPARD) {   /* the pressure first: the wall ghosts interpolate it */
     add_volumes_and_lists(e);
@@ -214,26 +230,30 @@ void engine_print_pipeline(const struct engine *e) {
   printf("terms:");
   for (int k = 0; k < (int)(sizeof names / sizeof names[0]); k++)
     if (e->features & (1u << k)) printf(" [%s]", names[k]);
-  printf("\npipeline per RK stage (%d operations):\n", e->n_ops);
+  if (e->features & FEAT_RIEMANN) printf(" [Riemann SPH, density re-initialisation, dual time stepping]");
+  if (e->features & FEAT_TRANSPORT_VELOCITY) printf(" [transport velocity of the light phases]");
+  printf("\npipeline per %s (%d operations):\n", (e->features & FEAT_RIEMANN) ? "advection step" : "RK stage", e->n_ops);
   for (int k = 0; k < e->n_ops; k++) printf("  %d. %s\n", k + 1, e->ops[k].name);
 }
 
-void engine_evaluate(struct engine *e, int skip_state_halo) {
+void engine_run_op(struct engine *e, int k) {
   double *fields[32];
-  for (int k = skip_state_halo ? 1 : 0; k < e->n_ops; k++) {
-    struct stage_op *op = &e->ops[k];
-    if (op->once_per_step && e->stage > 0) continue;
-    double t0 = MPI_Wtime();
-    if (op->pass) {
-      e->pass_pairs = 0;
-      op->pass(e);
-      op->pairs += e->pass_pairs;
-    } else {
-      halo_update(&e->halo, &e->p, fields, halo_field_list(e, op->halo_fields, fields));
-    }
-    op->seconds += MPI_Wtime() - t0;
-    if (op->pass) e->t_compute += MPI_Wtime() - t0;
+  struct stage_op *op = &e->ops[k];
+  double t0 = MPI_Wtime();
+  if (op->pass) {
+    e->pass_pairs = 0;
+    op->pass(e);
+    op->pairs += e->pass_pairs;
+  } else {
+    halo_update(&e->halo, &e->p, fields, halo_field_list(e, op->halo_fields, fields));
   }
+  op->seconds += MPI_Wtime() - t0;
+  if (op->pass) e->t_compute += MPI_Wtime() - t0;
+}
+
+void engine_evaluate(struct engine *e, int skip_state_halo) {
+  for (int k = skip_state_halo ? 1 : 0; k < e->n_ops; k++)
+    if (!e->ops[k].once_per_step || e->stage <= 0) engine_run_op(e, k);
 }
 
 void engine_ghosts_now(struct engine *e) {
@@ -396,6 +416,7 @@ static void rk4_update(struct engine *e, int s, const struct frame *start) {
 int engine_step(struct engine *e) {
   static const double stage_offset[4] = {0, 0.5, 0.5, 1.0};
   struct frame start[CASE_MAX_WALLS];
+  if (e->features & FEAT_RIEMANN) return engine_step_dual(e);
   engine_work_reserve(e);
   save_state(e);
   e->step_start_time = e->time;

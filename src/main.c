@@ -55,13 +55,24 @@ static int parse_args(int argc, char **argv, struct args *a, char *err, size_t l
 }
 
 /* The schemes this version implements; anything else is refused with a reason. */
+/* Scheme riemann: fixed walls only (its dual stepper does not move walls) and no surface tension. */
+static int riemann_supported(const struct case_def *c, char *err, size_t len) {
+  for (int w = 0; w < c->n_walls; w++)
+    if (c->walls[w].moving)
+      return snprintf(err, len, "%s: walls: scheme riemann supports fixed walls only in this version", c->source_file), 1;
+  if (c->surface_tension > 0)
+    return snprintf(err, len, "%s: physics.surface_tension: not available with scheme riemann", c->source_file), 1;
+  return 0;
+}
+
 static int supported(const struct case_def *c, char *err, size_t len) {
 #ifdef MPSPH_SINGLE_PHASE
   if (c->n_phases > 1)
     return snprintf(err, len, "%s: phases: this build (SINGLE_PHASE=1) runs single-phase cases only", c->source_file), 1;
 #endif
+  if (c->scheme == SCHEME_RIEMANN) return riemann_supported(c, err, len);
   if (c->scheme == SCHEME_DELTA_PLUS || c->scheme == SCHEME_DELTA_SPH) return 0;
-  snprintf(err, len, "%s: scheme: only delta-plus and delta-sph are implemented in this version", c->source_file);
+  snprintf(err, len, "%s: scheme: only delta-plus, delta-sph and riemann are implemented in this version", c->source_file);
   return 1;
 }
 

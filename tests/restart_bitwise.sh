@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Restart: a coarse two-phase dam break run for 120 steps on 2 ranks, and the same run stopped
 # at step 60 and continued with --restart on 2 ranks and on 3 ranks (with forced
-# re-partitions), end in bitwise-identical particle data, and so do their checkpoints. The
+# re-partitions), end in bitwise-identical particle data, and so do their checkpoints (also with
+# scheme riemann, 1 rank against 2 continued on 3). The
 # continued runs number their snapshots on and keep one stats.csv. A finished run extended with
 # a later time.end continues from its last step. A missing or corrupt checkpoint, or a case that
 # differs in more than time.end/output/parallel, is refused with status 1.
@@ -46,6 +47,17 @@ assert steps == sorted(set(steps)), steps
 assert [r for r in half if int(r[0]) > 60] == [r for r in ref if int(r[0]) > 60]
 print(f"snapshots {n_ref} + 1, stats.csv rows in order: ok")
 PY
+
+# Scheme riemann (dual time stepping): 60 advection steps of the two-phase tank on 1 rank, and
+# 30 on 2 ranks continued on 3, end in the same checkpoint bit for bit.
+riemann=(build/mpsph run cases/hydrostatic-2phase/case.yaml --set scheme=riemann --set kernel=wendland-c2
+         --set resolution.h_over_dx=1.3 --set resolution.dx=0.05 --set phases.0.c0=62.6 --set phases.0.gamma=1
+         --set phases.1.c0=62.6 --set phases.1.gamma=1 --set physics.u_max=6.26 --set time.cfl=0.6
+         --set output.interval=0 --set output.progress_interval=1000)
+scripts/mpirun -n 1 "${riemann[@]}" -o "$out/ri_ref" --set time.max_steps=60 > "$out/ri_ref.log" 2>&1
+scripts/mpirun -n 2 "${riemann[@]}" -o "$out/ri_half" --set time.max_steps=30 > "$out/ri_half.log" 2>&1
+scripts/mpirun -n 3 "${riemann[@]}" -o "$out/ri_half" --set time.max_steps=60 --restart > "$out/ri_half2.log" 2>&1
+"$PYTHON" tests/compare_snapshots.py "$out/ri_ref/checkpoint.h5" "$out/ri_half/checkpoint.h5"
 
 # A finished run extended with a later time.end.
 run 2 "$out/ext" --set time.end=0.004

@@ -23,7 +23,8 @@ def drop_study(case, title, radius, ladder):
             "error": "max |a_SPH - a| / R over one period", "threshold": 0.02,
             "metric": functools.partial(metrics.drop_semi_axis, radius=radius),
             "rungs": [rung(dx, n, q, **{"output.interval": 0.1}) for dx, n, q in ladder] +
-                     [rung(dx, n, q, label="delta-sph", **DELTA_SPH, **{"output.interval": 0.1}) for dx, n, q in ladder],
+                     [rung(dx, n, q, label="delta-sph", **DELTA_SPH, **{"output.interval": 0.1}) for dx, n, q in ladder] +
+                     [rung(dx, n, q, label="riemann", **RIEMANN, **{"output.interval": 0.1}) for dx, n, q in ladder],
             "plot": "drop"}
 
 
@@ -46,6 +47,12 @@ WEIGHTED_LABEL = "delta-plus, density-weighted interface pressure"
 DELTA_SPH = {"scheme": "delta-sph", "physics.shifting": "none"}
 # paper 001 runs its hydrostatic tank with p_b = 0.1 p_max (notes section 2.4), p_max = rho_w g Hw
 DELTA_SPH_HYDRO = {**DELTA_SPH, "phases.0.p_background": 981, "phases.1.p_background": 981}
+# paper 002: Wendland C2 with h = 1.3 dx, one linear EOS p = c^2 (rho - rho0) for both phases with
+# c = 10 U_max, U_max = 2 sqrt(g Hw) (notes seed-002 sections 1.3, 2.1), acoustic CFL 0.6 (Eq. 25)
+RIEMANN = {"scheme": "riemann", "kernel": "wendland-c2", "resolution.h_over_dx": 1.3, "time.cfl": 0.6}
+RIEMANN_HYDRO = {**RIEMANN, "phases.0.c0": 62.6, "phases.0.gamma": 1, "phases.1.c0": 62.6, "phases.1.gamma": 1,
+                 "physics.u_max": 6.26}
+RIEMANN_DB2 = {**RIEMANN, "phases.0.gamma": 1, "phases.1.c0": 48.5, "phases.1.gamma": 1, "physics.u_max": 4.85}
 DB2_COARSE = {"domain.min": "[-0.3,-0.3]", "domain.max": "[3.516,2.1]"}    # room for 4 ghost layers at dx = 0.048
 RT_RUNGS = [rung(dx, n, q, **{"time.end": 3.0, "output.interval": 0.05}) for dx, n, q in
             ((0.04, 1, True), (0.02, 2, True), (0.01, 2, False))]
@@ -73,7 +80,10 @@ STUDIES = [
                   rung(0.04, 2, label=WEIGHTED_LABEL + ", t sqrt(g/Hw) = 40", **WEIGHTED, **{"time.end": 12.77}),
                   rung(0.1, 1, True, label="delta-sph", **HYDRO_DOMAIN, **DELTA_SPH_HYDRO, **{"time.end": 1.0}),
                   rung(0.05, 2, True, label="delta-sph", **DELTA_SPH_HYDRO, **{"time.end": 1.0}),
-                  rung(0.025, 2, label="delta-sph", **DELTA_SPH_HYDRO, **{"time.end": 1.0})],
+                  rung(0.025, 2, label="delta-sph", **DELTA_SPH_HYDRO, **{"time.end": 1.0}),
+                  rung(0.1, 1, True, label="riemann", **HYDRO_DOMAIN, **RIEMANN_HYDRO, **{"time.end": 1.0}),
+                  rung(0.05, 2, True, label="riemann", **RIEMANN_HYDRO, **{"time.end": 1.0}),
+                  rung(0.025, 2, label="riemann", **RIEMANN_HYDRO, **{"time.end": 1.0})],
         "plot": "hydrostatic",
     },
     drop_study("oscillating-drop", "Oscillating drop, one fluid (paper 001 section III.B)", 1.0,
@@ -106,7 +116,12 @@ STUDIES = [
                   rung(0.048, 2, True, label=POSITION_ONLY, **DB2_COARSE, **IMPACT_RUN, **{"physics.shifting": "position"}),
                   rung(0.024, 2, label=POSITION_ONLY, **IMPACT_RUN, **{"physics.shifting": "position"}),
                   rung(0.048, 2, True, label=WEIGHTED_LABEL, **DB2_COARSE, **IMPACT_RUN, **WEIGHTED),
-                  rung(0.024, 2, label=WEIGHTED_LABEL, **IMPACT_RUN, **WEIGHTED)]),
+                  rung(0.024, 2, label=WEIGHTED_LABEL, **IMPACT_RUN, **WEIGHTED),
+                  # riemann re-initialises the density by summation, so the water top (0.6 m) must lie
+                  # on the lattice: dx = 0.048 puts the first air row dx/2 above the last water row
+                  rung(0.04, 2, True, label="riemann", **DB2_COARSE, **IMPACT_RUN, **RIEMANN_DB2),
+                  rung(0.024, 2, label="riemann", **IMPACT_RUN, **RIEMANN_DB2),
+                  rung(0.012, 2, label="riemann", **IMPACT_RUN, **RIEMANN_DB2)]),
     {
         "id": "rayleigh-taylor-growth",
         "case": "rayleigh-taylor",

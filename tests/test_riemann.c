@@ -1,0 +1,293 @@
+/* test_riemann.c — scheme riemann (paper 002) on analytic fields, through the real engine (run
+ * with 1 and 2 ranks):
+ *  1. the solver alone: p* symmetric under left <-> right; no dissipation in expansion (beta = 0);
+ *     equal states give p; the dissipation is capped at the acoustic value rho c dU / 2; a light
+ *     left state next to a heavy right one at rest gives p* -> p_left;
+ *  2. two phases (water under a light phase, no walls, no gravity) on the undisturbed lattice at
+ *     rho0: the density re-initialisation gives rho0 to round-off for every heavy particle
+ *     (interface and free edges included: Eq. 10 keeps rho* = rho0) and for every light particle
+ *     whose kernel support is complete (Eq. 11 counts the heavy neighbours);
+ *  3. one density, a linear pressure field and a pure dilatation v = s r (every pair separates, so
+ *     the limiter gives beta = 0 and p* = (p_i + p_j)/2): du/dt equals the plain symmetric pressure
+ *     term -(1/rho_i) sum_j V_j (p_i + p_j) grad_i W_ij and drho/dt equals rho_i sum_j V_j v_ij.grad_i W_ij
+ *     + (1/c) sum_j V_j (p_i - p_j) r_ij F_ij, both summed here by brute force, to round-off;
+ *  4. random velocities and densities in both phases: sum_i m_i du_i/dt = 0 to round-off;
+ *  5. walls: one phase at rest at a uniform pressure p_b in a closed tank (no gravity) on the
+ *     undisturbed lattice; the ghosts carry each particle's dummy state (p_j = p_i, v_j = 0), so
+ *     p*_ij = p_i and du/dt = -(2 p_i/rho_i) sum_j V_j grad_i W_ij = 0 and drho/dt = 0 to round-off
+ *     for every particle, those beside the walls and in the corners included;
+ *  6. the dual stepper on one phase moving uniformly at speed U (no force acts): the advection step
+ *     is 0.25 h / u_max for U << u_max and the cell-skin limit B / U for U >> u_max (B = 0.75 of
+ *     the allowed motion), 2B / (U + sqrt(U^2 + 2 a B)) with a transport acceleration a; one
+ *     advection step takes ceil(dt_ad / dt_ac) acoustic sub-steps, dt_ac = cfl h / (c0 + U), and
+ *     moves every particle by U dt_ad.
+ * Usage: test_riemann */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+#include "case_load.h"
+#include "check.h"
+#include "engine_test.h"
+#include "engine.h"
+#include "eos.h"
+#include "passes.h"
+#include "riemann.h"
+
+static const char *two_phase_case =
+    "name: riemann-test\n"
+    "dimension: 2\n"
+    "scheme: riemann\n"
+    "kernel: wendland-c2\n"
+    "resolution: {dx: 0.02, h_over_dx: 1.3}\n"
+    "time: {end: 1.0, cfl: 0.6}\n"
+    "domain: {min: [-0.1, -0.1], max: [1.1, 1.1]}\n"
+    "phases:\n"
+    "  - {name: water, rho0: 1000, c0: 20, gamma: 1, incompressible: true}\n"
+    "  - {name: light, rho0: 1, c0: 20, gamma: 1, density_band: [0.5, 2000]}\n"
+    "fluids:\n"
+    "  - {phase: water, box: {min: [0, 0], max: [1, 0.5]}}\n"
+    "  - {phase: light, box: {min: [0, 0.5], max: [1, 1]}}\n"
+    "physics: {u_max: 2}\n"
+    "initial: {pressure: zero}\n"
+    "output: {progress_interval: 1000}\n";
+
+static const char *one_phase_case =
+    "name: riemann-step-test\n"
+    "dimension: 2\n"
+    "scheme: riemann\n"
+    "kernel: wendland-c2\n"
+    "resolution: {dx: 0.05, h_over_dx: 1.3}\n"
+    "time: {end: 10.0, cfl: 0.6}\n"
+    "domain: {min: [-1, -1], max: [3, 2]}\n"
+    "phases:\n"
+    "  - {name: water, rho0: 1000, c0: 200, gamma: 1, incompressible: true}\n"
+    "fluids:\n"
+    "  - {phase: water, box: {min: [0, 0], max: [1, 1]}}\n"
+    "physics: {u_max: 2}\n"
+    "initial: {pressure: zero}\n"
+    "output: {progress_interval: 1000}\n";
+
+static const char *wall_case =
+    "name: riemann-wall-test\n"
+    "dimension: 2\n"
+    "scheme: riemann\n"
+    "kernel: wendland-c2\n"
+    "resolution: {dx: 0.05, h_over_dx: 1.3}\n"
+    "time: {end: 1.0, cfl: 0.6}\n"
+    "domain: {min: [-0.5, -0.5], max: [1.5, 1.5]}\n"
+    "phases:\n"
+    "  - {name: water, rho0: 1000, c0: 20, gamma: 1, incompressible: true, p_background: 5000}\n"
+    "fluids:\n"
+    "  - {phase: water, box: {min: [0, 0], max: [1, 1]}}\n"
+    "walls:\n"
+    "  - {box: {min: [0, 0], max: [1, 1]}, slip: no}\n"
+    "physics: {u_max: 2}\n"
+    "initial: {pressure: zero}\n"
+    "output: {progress_interval: 1000}\n";
+
+static void check_solver(void) {
+  double zl = 1000 * 20, zr = 1 * 20, pl = 300, pr = 100;
+  CHECK(riemann_pressure(zl, pl, zr, pr, 0.7, 20) == riemann_pressure(zr, pr, zl, pl, 0.7, 20), "p* symmetric");
+  CHECK_CLOSE(riemann_pressure(zl, pl, zr, pr, -0.7, 20), (zl * pr + zr * pl) / (zl + zr), 1e-12, "expansion: no dissipation");
+  CHECK_CLOSE(riemann_pressure(zl, pl, zl, pl, 0.0, 20), pl, 1e-12, "equal states");
+  double z = 1000 * 20, big = 50;   /* 3 dU > c: beta = c */
+  CHECK_CLOSE(riemann_pressure(z, pl, z, pl, big, 20), pl + 0.5 * z * big, 1e-9, "dissipation capped at rho c dU / 2");
+  double small = 0.1;   /* 3 dU < c: beta = 3 dU */
+  CHECK_CLOSE(riemann_pressure(z, pl, z, pl, small, 20), pl + 0.5 * 1000 * 3 * small * small, 1e-9, "beta = 3 dU");
+  CHECK(fabs(riemann_pressure(1e-6 * z, pl, z, pr, 0.0, 20) - pl) <= 1e-6 * fabs(pl - pr), "light left, heavy right: p* -> p_left");
+}
+
+/* Field k on the lattice: 0 rho0 at rest; 1 one density (the water's), p linear, v = s r;
+ * 2 random velocities and densities. Masses rho0 dx^2; pressures from the EOS except in field 1. */
+static void set_fields(struct engine *e, int k) {
+  struct parts *p = &e->p;
+  for (long i = 0; i < p->n_owned; i++) {
+    if (p->phase[i] == PHASE_WALL) continue;
+    const struct phase *f = &e->c->phases[p->phase[i]];
+    p->m[i] = f->rho0 * e->vol0;
+    p->rho[i] = k == 2 ? f->rho0 * (1 + 0.01 * engine_test_noise(p->id[i], 5)) : f->rho0;
+    p->p[i] = eos_pressure(f, p->rho[i]);
+    for (int d = 0; d < 2; d++) p->v[d][i] = k == 1 ? 0.3 * p->x[d][i] : k == 2 ? engine_test_noise(p->id[i], 10 + d) : 0;
+    if (k == 1) {
+      p->m[i] = 1000 * e->vol0;
+      p->rho[i] = 1000;
+      p->p[i] = 500 + 700 * p->x[0][i] - 300 * p->x[1][i];
+    }
+  }
+}
+
+/* Halo and volumes of the state set, then pass op of the pipeline. */
+static void run_pass(struct engine *e, const char *name) {
+  for (int k = 0; k < e->n_ops; k++)
+    if (!e->ops[k].pass || !strcmp(e->ops[k].name, "volumes m/rho of owned and halo particles") ||
+        !strncmp(e->ops[k].name, "neighbour lists", 15) || !strncmp(e->ops[k].name, name, strlen(name))) {
+      if (!strncmp(e->ops[k].name, "halo: re-init", 13)) continue;
+      engine_run_op(e, k);
+      if (!strncmp(e->ops[k].name, name, strlen(name))) return;
+    }
+}
+
+static void set_and_rebuild(struct engine *e, int k) {
+  set_fields(e, k);
+  CHECK(engine_rebuild(e) == 0, "rebuild");
+}
+
+/* 1 if owned particle i's kernel support lies inside the box [0,1]^2. */
+static int support_inside(const struct engine *e, long i) {
+  double x = e->p.x[0][i], y = e->p.x[1][i], s = e->kern.support;
+  return fmin(fmin(x, 1 - x), fmin(y, 1 - y)) > s;
+}
+
+static void check_reinit(struct engine *e) {
+  set_and_rebuild(e, 0);
+  run_pass(e, "density re-initialisation");
+  double err[2] = {0, 0};
+  for (long i = 0; i < e->p.n_owned; i++) {
+    int ph = e->p.phase[i];
+    double rho0 = e->c->phases[ph].rho0;
+    if (ph == 0 || support_inside(e, i)) err[ph] = fmax(err[ph], fabs(e->p.rho[i] - rho0) / rho0);
+  }
+  MPI_Allreduce(MPI_IN_PLACE, err, 2, MPI_DOUBLE, MPI_MAX, e->comm);
+  if (e->rank == 0) printf("re-initialised density error: heavy %.3g (all), light %.3g (complete supports)\n", err[0], err[1]);
+  CHECK(err[0] <= 1e-13 && err[1] <= 1e-13, "re-initialisation on the lattice: %g %g", err[0], err[1]);
+}
+
+/* The plain symmetric pressure term and the expected continuity of owned particle i by brute force
+ * over every slot; scale: the sums of the magnitudes. */
+static void plain_terms(const struct engine *e, long i, double *acc, double *drho, double *scale) {
+  const struct parts *p = &e->p;
+  double c = e->c->phases[0].c0;
+  acc[0] = acc[1] = *drho = scale[0] = scale[1] = 0;
+  for (long j = 0; j < p->n_owned + p->n_halo; j++) {
+    double dx[3], r2 = pair_separation(p, 2, i, j, dx);
+    if (j == i || r2 >= e->kern.support2 || p->phase[j] == PHASE_WALL) continue;
+    double fv = kernel_f(&e->kern, r2) * p->m[j] / p->rho[j], vdx = 0;
+    for (int d = 0; d < 2; d++) {
+      acc[d] -= (p->p[i] + p->p[j]) * fv * dx[d] / p->rho[i];
+      scale[0] += fabs((p->p[i] + p->p[j]) * fv * dx[d] / p->rho[i]);
+      vdx += (p->v[d][i] - p->v[d][j]) * dx[d];
+    }
+    double t = p->rho[i] * fv * vdx + fv * (p->p[i] - p->p[j]) * sqrt(r2) / c;
+    *drho += t;
+    scale[1] += fabs(t);
+  }
+}
+
+static void check_equal_states(struct engine *e) {
+  set_and_rebuild(e, 1);
+  run_pass(e, "Riemann momentum");
+  run_pass(e, "Riemann continuity");
+  double worst[2] = {0, 0};
+  for (long i = 0; i < e->p.n_owned; i++) {
+    double acc[2], drho, scale[2];
+    plain_terms(e, i, acc, &drho, scale);
+    for (int d = 0; d < 2; d++) worst[0] = fmax(worst[0], fabs(e->w.dv[d][i] - acc[d]) / scale[0]);
+    worst[1] = fmax(worst[1], fabs(e->w.drho[i] - drho) / scale[1]);
+  }
+  MPI_Allreduce(MPI_IN_PLACE, worst, 2, MPI_DOUBLE, MPI_MAX, e->comm);
+  if (e->rank == 0) printf("equal states, expansion: |du/dt - plain| / scale %.3g, |drho/dt - expected| / scale %.3g\n", worst[0], worst[1]);
+  CHECK(worst[0] <= 1e-13 && worst[1] <= 1e-13, "Riemann terms = plain terms: %g %g", worst[0], worst[1]);
+}
+
+static void check_momentum(struct engine *e) {
+  set_and_rebuild(e, 2);
+  run_pass(e, "Riemann momentum");
+  const struct parts *p = &e->p;
+  double sum[4] = {0, 0, 0, 0};
+  for (long i = 0; i < p->n_owned; i++)
+    for (int d = 0; d < 2 && p->phase[i] != PHASE_WALL; d++) {
+      sum[d] += p->m[i] * e->w.dv[d][i];
+      sum[2 + d] += fabs(p->m[i] * e->w.dv[d][i]);
+    }
+  MPI_Allreduce(MPI_IN_PLACE, sum, 4, MPI_DOUBLE, MPI_SUM, e->comm);
+  if (e->rank == 0) printf("momentum: sum m du/dt = (%.3g, %.3g), scale (%.3g, %.3g)\n", sum[0], sum[1], sum[2], sum[3]);
+  for (int d = 0; d < 2; d++)
+    CHECK(fabs(sum[d]) <= 1e-13 * sum[2 + d], "momentum %c: %g, scale %g", "xy"[d], sum[d], sum[2 + d]);
+}
+
+static void check_walls(struct engine *e) {
+  set_and_rebuild(e, 0);
+  run_pass(e, "Riemann momentum");
+  run_pass(e, "Riemann continuity");
+  double worst[2] = {0, 0}, scale = 2 * 5000 / 1000.0 / e->h;   /* 2 p / (rho h) */
+  for (long i = 0; i < e->p.n_owned; i++) {
+    if (e->p.phase[i] == PHASE_WALL) continue;
+    worst[0] = fmax(worst[0], hypot(e->w.dv[0][i], e->w.dv[1][i]) / scale);
+    worst[1] = fmax(worst[1], fabs(e->w.drho[i]));
+  }
+  MPI_Allreduce(MPI_IN_PLACE, worst, 2, MPI_DOUBLE, MPI_MAX, e->comm);
+  if (e->rank == 0) printf("walls, uniform pressure at rest: |du/dt| / (2p/(rho h)) %.3g, |drho/dt| %.3g\n", worst[0], worst[1]);
+  CHECK(worst[0] <= 1e-13 && worst[1] == 0, "walls at rest: du/dt %g, drho/dt %g", worst[0], worst[1]);
+}
+
+/* Every fluid particle at rest density with velocity (u, 0). */
+static void uniform_flow(struct engine *e, double u) {
+  struct parts *p = &e->p;
+  for (long i = 0; i < p->n_owned; i++) {
+    p->rho[i] = e->c->phases[0].rho0;
+    p->p[i] = eos_pressure(&e->c->phases[0], p->rho[i]);
+    p->v[0][i] = u;
+    p->v[1][i] = 0;
+  }
+}
+
+static void check_stepper(struct engine *e) {
+  double h = e->h, b = 0.75 * engine_shift_max(e), u_ref = e->c->u_max;
+  uniform_flow(e, 0.1 * u_ref);
+  CHECK_CLOSE(dual_advection_dt(e, 0.0), 0.25 * h / u_ref, 1e-15, "dt_ad, U << u_max");
+  double u = 10 * u_ref, a = 500;
+  uniform_flow(e, u);
+  CHECK_CLOSE(dual_advection_dt(e, 0.0), b / u, 1e-15, "dt_ad, U >> u_max: the cell-skin limit");
+  CHECK_CLOSE(dual_advection_dt(e, a), 2 * b / (u + sqrt(u * u + 2 * a * b)), 1e-15, "dt_ad with a transport shift");
+  u = 3.0;
+  uniform_flow(e, u);
+  double dt_ad = fmin(0.25 * h / fmax(u_ref, u), b / u), dt_ac = e->c->cfl * h / (e->c->phases[0].c0 + u), x0[2] = {0, 0};
+  long first = -1;
+  for (long i = 0; i < e->p.n_owned && first < 0; i++) first = i;
+  if (first >= 0) for (int d = 0; d < 2; d++) x0[d] = e->p.x[d][first];
+  CHECK(engine_step_dual(e) == 0, "advection step");
+  long expected = (long)ceil(dt_ad / dt_ac);
+  if (e->rank == 0) printf("stepper: dt_ad %.6g (expected %.6g), %ld acoustic sub-steps (expected %ld)\n", e->dt, dt_ad, e->n_acoustic, expected);
+  CHECK_CLOSE(e->dt, dt_ad, 1e-15, "advection step");
+  CHECK(e->n_acoustic == expected, "sub-steps %ld, expected %ld", e->n_acoustic, expected);
+  if (first >= 0) {
+    CHECK_CLOSE(e->p.x[0][first] - x0[0], u * dt_ad, 1e-13, "moved by U dt_ad");
+    CHECK_CLOSE(e->p.x[1][first] - x0[1], 0.0, 1e-15, "no transverse motion");
+    CHECK_CLOSE(e->p.v[0][first], u, 1e-12, "velocity kept");
+  }
+}
+
+int main(int argc, char **argv) {
+  MPI_Init(&argc, &argv);
+  int rank;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  if (rank == 0) check_solver();
+  char dir[256] = "/tmp/mpsph-test-riemann-XXXXXX", dir1[256] = "/tmp/mpsph-test-riemann1-XXXXXX";
+  char dir2[256] = "/tmp/mpsph-test-riemann2-XXXXXX";
+  if (engine_test_scratch(dir, sizeof dir) || engine_test_scratch(dir1, sizeof dir1) ||
+      engine_test_scratch(dir2, sizeof dir2))
+    return 1;
+  static struct case_def c, c1, c2;
+  struct engine e, e1, e2;
+  if (engine_test_start(dir, two_phase_case, &c, &e)) return check_report("test_riemann");
+  CHECK((e.features & FEAT_RIEMANN) && (e.features & FEAT_TRANSPORT_VELOCITY) && !(e.features & (FEAT_SHIFT | FEAT_DAMPER | FEAT_TIC)),
+        "riemann pipeline: its own terms only, transport velocity with a light phase");
+  check_reinit(&e);
+  check_equal_states(&e);
+  check_momentum(&e);
+  engine_close_output(&e);
+  engine_free(&e);
+  if (engine_test_start(dir2, wall_case, &c2, &e2)) return check_report("test_riemann");
+  check_walls(&e2);
+  engine_close_output(&e2);
+  engine_free(&e2);
+  if (engine_test_start(dir1, one_phase_case, &c1, &e1)) return check_report("test_riemann");
+  CHECK(!(e1.features & FEAT_TRANSPORT_VELOCITY), "one phase: no transport velocity");
+  check_stepper(&e1);
+  if (rank == 0) {
+    char cmd[600];
+    snprintf(cmd, sizeof cmd, "rm -rf '%s' '%s'", dir, dir2);
+    if (system(cmd)) printf("could not remove %s, %s\n", dir, dir2);
+  }
+  return engine_test_finish(&e1, dir1, "test_riemann");
+}
