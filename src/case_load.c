@@ -796,11 +796,13 @@ static double default_u_max(const struct case_def *c) {
 static int read_physics(const struct map *root, struct case_def *c) {
   struct map ph;
   int shifting, tic, fs, form, limit, iface_p;
-  int plus = c->scheme == SCHEME_DELTA_PLUS;   /* delta-sph: no shifting, TIC or damper (paper 001) */
+  int plus = c->scheme == SCHEME_DELTA_PLUS;   /* delta-sph, same-phase-continuity: no shifting, TIC or
+                                                  damper (papers 001, 003) */
   double mode;
   if (sub(root, "physics", PHYSICS_KEYS, &ph) ||
       num(&ph, "delta", &R_NONNEGATIVE, 0.1, &c->delta) ||
-      num(&ph, "artificial_viscosity", &R_NONNEGATIVE, 0.1, &c->alpha) ||
+      num(&ph, "artificial_viscosity", &R_NONNEGATIVE, c->scheme == SCHEME_SAME_PHASE_CONTINUITY ? 0.05 : 0.1,
+          &c->alpha) ||   /* paper 003: alpha_w = 0.05 */
       num(&ph, "acoustic_damper", &R_NONNEGATIVE, plus ? 10 : 0, &c->acoustic_damper) ||
       choice(&ph, "shifting", SHIFTING_NAMES, plus ? SHIFTING_CONSISTENT : SHIFTING_NONE, &shifting) ||
       num(&ph, "u_max", &R_POSITIVE, default_u_max(c), &c->u_max) ||

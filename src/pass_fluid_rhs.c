@@ -143,8 +143,7 @@ static void dispatch(const struct engine *e, const struct centre *ci, const stru
   else du ? PHASED(3, 1) : PHASED(3, 0);
 }
 
-/* Body force per unit mass at particle i: gravity and the quadratic potential. */
-static void body_force(const struct engine *e, long i, double *f) {
+void fluid_body_force(const struct engine *e, long i, double *f) {
   const struct case_def *c = e->c;
   double w2 = c->potential_omega * c->potential_omega;
   for (int d = 0; d < e->p.dim; d++) f[d] = c->gravity[d] - w2 * (e->p.x[d][i] - c->potential_centre[d]);
@@ -157,7 +156,7 @@ static void finish(struct engine *e, const struct centre *ci, const struct fluid
   const long i = ci->i;
   double k_visc = e->c->alpha * e->h * f->c0 * f->rho0 + 2.0 * (p->dim + 2) * f->viscosity;
   double k_damp = e->damper_coef[1 + ci->phase], g[3];
-  body_force(e, i, g);
+  fluid_body_force(e, i, g);
   /* delta-sph integrates m/V: its diffusion is -(V/rho^S) times the volume diffusion (paper 001
    * Eq. 21 with the factor 2 restored), i.e. the density diffusion scaled by rho_i / rho^S_i */
   double diffusion = e->c->delta * e->h * f->c0 * s->diff;
