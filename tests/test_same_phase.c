@@ -3,9 +3,10 @@
  * (1000 kg/m^3) below a light phase (1 kg/m^3), both with the paper's linear EOS (gamma = 1) and
  * one c0, p_b = 500 Pa, no walls:
  *  1. a linear velocity u = (0, b y) at uniform pressure: in the bulk drho/dt = -rho b M, M the
- *     kernel's moment sum on the lattice (1 - 9.8e-4 here: the Gaussian truncated at 3h), and drho/dt of every particle is bitwise the same when the
- *     other phase's velocities are replaced by random ones (continuity over chi_i only; with one
- *     pressure in both phases the diffusion vanishes, rho*_j = rho_i);
+ *     kernel's moment sum on the lattice (1 - 9.8e-4 here: the Gaussian truncated at 3h), and
+ *     drho/dt of every water particle is bitwise the same when the other phase's velocities are
+ *     replaced by random ones (continuity over chi_i only; with one pressure in both phases the
+ *     diffusion vanishes, rho*_j = rho_i);
  *  2. a constant pressure on a perturbed lattice: the Shepard pressure reproduces it for every
  *     particle, the interface rows included, and the diffusion vanishes for every particle;
  *  3. a linear pressure field p = p_b + s.x in both phases (densities from each phase's EOS): the
