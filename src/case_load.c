@@ -32,6 +32,7 @@ static const char *const BOOL_NAMES[] = {"false", "true", NULL};
 static const char *const FREE_SURFACE_NAMES[] = {"auto", "on", "off", NULL};
 static const char *const DAMPER_NAMES[] = {"difference", "symmetric", NULL};
 static const char *const IFACE_P_NAMES[] = {"sum", "density-weighted", NULL};
+static const char *const SPC_MODEL_NAMES[] = {"present", "conventional", NULL};
 static const char *const RAMP_NAMES[] = {"none", "linear", "smooth", NULL};
 
 /* The keys allowed in each mapping. */
@@ -59,7 +60,7 @@ static const char *const PHYSICS_KEYS[] = {"delta", "artificial_viscosity", "aco
                                            "shifting", "u_max", "tensile_control", "free_surface",
                                            "surface_band", "interface_mode", "damper_form",
                                            "interface_sharpness", "limit_surface_shifting",
-                                           "interface_pressure", "surface_tension", NULL};
+                                           "interface_pressure", "surface_tension", "spc_model", NULL};
 static const char *const INITIAL_KEYS[] = {"pressure", NULL};
 static const char *const PROBE_KEYS[] = {"name", "kind", "position", "diameter", "axis",
                                          "interpolation", "phase", NULL};
@@ -795,7 +796,7 @@ static double default_u_max(const struct case_def *c) {
 
 static int read_physics(const struct map *root, struct case_def *c) {
   struct map ph;
-  int shifting, tic, fs, form, limit, iface_p;
+  int shifting, tic, fs, form, limit, iface_p, spc_model;
   int plus = c->scheme == SCHEME_DELTA_PLUS;   /* delta-sph, same-phase-continuity: no shifting, TIC or
                                                   damper (papers 001, 003) */
   double mode;
@@ -814,7 +815,8 @@ static int read_physics(const struct map *root, struct case_def *c) {
       num(&ph, "interface_sharpness", &R_NONNEGATIVE, 0, &c->interface_sharpness) ||
       choice(&ph, "limit_surface_shifting", BOOL_NAMES, 0, &limit) ||
       choice(&ph, "interface_pressure", IFACE_P_NAMES, IFACE_P_SUM, &iface_p) ||
-      num(&ph, "surface_tension", &R_NONNEGATIVE, 0, &c->surface_tension))
+      num(&ph, "surface_tension", &R_NONNEGATIVE, 0, &c->surface_tension) ||
+      choice(&ph, "spc_model", SPC_MODEL_NAMES, SPC_PRESENT, &spc_model))
     return 1;
   c->shifting = (enum shifting_kind)shifting;
   c->tensile_control = tic;
@@ -823,6 +825,7 @@ static int read_physics(const struct map *root, struct case_def *c) {
   c->damper_form = (enum damper_form)form;
   c->limit_surface_shifting = limit;
   c->interface_pressure = (enum interface_pressure)iface_p;
+  c->spc_model = (enum spc_model)spc_model;
   return 0;
 }
 
@@ -1171,6 +1174,7 @@ static void put_tail(FILE *f, const struct case_def *c) {
   put_word(f, "  ", "limit_surface_shifting", BOOL_NAMES[c->limit_surface_shifting != 0]);
   put_word(f, "  ", "interface_pressure", IFACE_P_NAMES[c->interface_pressure]);
   put_num(f, "  ", "surface_tension", c->surface_tension);
+  put_word(f, "  ", "spc_model", SPC_MODEL_NAMES[c->spc_model]);
   fputs("initial:\n", f);
   put_word(f, "  ", "pressure", PRESSURE_NAMES[c->initial_pressure]);
   put_list_key(f, "probes", c->n_probes);

@@ -203,8 +203,10 @@ void engine_assemble(struct engine *e) {
     add_op(e, "free-surface region: band around the detected particles (once per step)", pass_surface_band, 0, 1);
   }
   if (f & FEAT_SAME_PHASE_CONTINUITY) {   /* its own pair passes (main.c refuses the delta-plus terms) */
-    add_op(e, "Shepard pressure over all phases (same-phase-continuity)", pass_shepard_pressure, 0, 0);
-    add_op(e, "halo: Shepard pressures", NULL, HF_P_SHEPARD, 0);
+    if (e->c->spc_model == SPC_PRESENT) {
+      add_op(e, "Shepard pressure over all phases (same-phase-continuity)", pass_shepard_pressure, 0, 0);
+      add_op(e, "halo: Shepard pressures", NULL, HF_P_SHEPARD, 0);
+    }
     add_op(e, "same-phase continuity and momentum rhs", pass_same_phase_rhs, 0, 0);
   } else
     add_gradients_and_rhs(e, f);

@@ -73,6 +73,8 @@ static int supported(const struct case_def *c, char *err, size_t len) {
   if (c->n_phases > 1)
     return snprintf(err, len, "%s: phases: this build (SINGLE_PHASE=1) runs single-phase cases only", c->source_file), 1;
 #endif
+  if (c->scheme != SCHEME_SAME_PHASE_CONTINUITY && c->spc_model != SPC_PRESENT)
+    return snprintf(err, len, "%s: physics.spc_model: conventional only with scheme same-phase-continuity", c->source_file), 1;
   if (c->scheme == SCHEME_DELTA_PLUS || c->scheme == SCHEME_DELTA_SPH) return 0;
   if (c->scheme == SCHEME_SAME_PHASE_CONTINUITY) return same_phase_terms(c, err, len);
   snprintf(err, len, "%s: scheme: only delta-plus, delta-sph and same-phase-continuity are implemented in this version",

@@ -7,7 +7,9 @@
  * another phase p*_j is its Shepard pressure p~_j (Eq. 26) and rho*_j the density of i's phase at
  * p*_j (Eq. 27, the inverse EOS of i's phase); for a ghost p*_j = p_j and rho*_j likewise (Eq. 38);
  * for i's own phase p*_j = p_j, rho*_j = rho_j. pi_ij = u_ji.r_ji/(r^2 + 0.01 h^2) and mu_ij is the
- * harmonic mean of the phases' mu = alpha h c0 rho0 / (2(d+2)) + viscosity (Eqs. 21-22). */
+ * harmonic mean of the phases' mu = alpha h c0 rho0 / (2(d+2)) + viscosity (Eqs. 21-22).
+ * physics.spc_model: conventional is paper 003's baseline (section 2.3, Eqs. 17-22): the divergence
+ * over every neighbour and p*_j = p_j for every j (rho*_j = rho'_j of Eq. 20), no Shepard pass. */
 #include "eos.h"
 #include "passes.h"
 
@@ -54,6 +56,7 @@ static void spc_sums(const struct engine *e, long i, const struct neighbours *nb
   const struct parts *p = &e->p;
   const double *restrict rho = p->rho, *restrict pres = p->p, *restrict vol = e->w.vol;
   const double *restrict p_tilde = e->w.p_shepard;
+  const int conventional = e->c->spc_model == SPC_CONVENTIONAL;
   const int dim = p->dim, ph = p->phase[i];
   const struct phase *fi = &e->c->phases[ph];
   const double pi = pres[i], rhoi = rho[i], eta2 = 0.01 * e->h * e->h, support2 = e->kern.support2;
@@ -68,11 +71,11 @@ static void spc_sums(const struct engine *e, long i, const struct neighbours *nb
     for (int d = 0; d < dim; d++) dvdx += (p->v[d][j] - p->v[d][i]) * dx[d];
     const double fv = kernel_f(&e->kern, r2) * vol[j];   /* gW_ij = fv (r_i - r_j) */
     const int wall = p->phase[j] == PHASE_WALL, same = p->phase[j] == ph;
-    const double p_star = same || wall ? pres[j] : p_tilde[j];
+    const double p_star = same || wall || conventional ? pres[j] : p_tilde[j];
     const double rho_star = same ? rho[j] : eos_density(fi, p_star);
     const double mu_ij = harmonic_mean(mu[ph], wall ? mu[ph] : mu[p->phase[j]]);
     const double pi_ij = -dvdx / (r2 + eta2);   /* u_ji.r_ji / (r^2 + 0.01 h^2) */
-    if (same || wall) s->div += dvdx * fv;
+    if (same || wall || conventional) s->div += dvdx * fv;
     s->diff -= 2.0 * (rho_star - rhoi) * fv;    /* psi*_ij.gW_ij: r_ji.r_ij / r^2 = -1 */
     for (int d = 0; d < dim; d++) {
       s->grad_p[d] += (pi + p_star) * fv * dx[d];
