@@ -76,6 +76,11 @@ void pass_shepard_pressure(struct engine *e);
  *  Shepard pressure and its density in the phase of i (paper 003 Eqs. 23-27). */
 void pass_same_phase_rhs(struct engine *e);
 
+/** Scheme same-phase-continuity: add to acc the wall repulsion of paper 003 Eq. 39 on gas
+ *  particle i from wall ghost b, c0 |(u_i - u_b).n_b| W_ib h^d / |r_ib.n_b| along the ghost's unit
+ *  normal n_b (toward its mirror point) while i approaches the wall, else nothing [m/s^2]. */
+void spc_wall_repulsion(const struct engine *e, long i, long b, double *acc);
+
 /** Body force per unit mass at particle i: gravity and the quadratic potential [m/s^2]. */
 void fluid_body_force(const struct engine *e, long i, double *f);
 

@@ -8,8 +8,12 @@
  * p*_j (Eq. 27, the inverse EOS of i's phase); for a ghost p*_j = p_j and rho*_j likewise (Eq. 38);
  * for i's own phase p*_j = p_j, rho*_j = rho_j. pi_ij = u_ji.r_ji/(r^2 + 0.01 h^2) and mu_ij is the
  * harmonic mean of the phases' mu = alpha h c0 rho0 / (2(d+2)) + viscosity (Eqs. 21-22).
+ * A gas particle approaching a wall ghost b is pushed back by paper 003 Eq. 39:
+ *   a_i += -c0 [(u_i - u_b).n_b] W_ib h^d n_b / |r_ib.n_b|   when (u_i - u_b).n_b < 0,
+ * n_b the unit normal from the ghost toward its mirror point (into the fluid).
  * physics.spc_model: conventional is paper 003's baseline (section 2.3, Eqs. 17-22): the divergence
  * over every neighbour and p*_j = p_j for every j (rho*_j = rho'_j of Eq. 20), no Shepard pass. */
+#include <math.h>
 #include "eos.h"
 #include "passes.h"
 
@@ -38,7 +42,7 @@ void pass_shepard_pressure(struct engine *e) { pass_for_each_owned(e, shepard_pr
 
 /* Sums over the neighbours of fluid particle i. */
 struct spc_sums {
-  double div, diff, grad_p[3], visc[3];
+  double div, diff, grad_p[3], visc[3], repulsion[3];
 };
 
 /* Dynamic viscosity of phase k for the pair term: alpha h c0 rho0 / (2(d+2)) + viscosity [Pa s]. */
@@ -50,6 +54,26 @@ static double phase_mu(const struct engine *e, int k) {
 /* Harmonic mean 2 a b / (a + b), 0 when both are 0. */
 static double harmonic_mean(double a, double b) { return a + b > 0 ? 2.0 * a * b / (a + b) : 0.0; }
 
+void spc_wall_repulsion(const struct engine *e, long i, long b, double *acc) {
+  const struct parts *p = &e->p;
+  const int dim = p->dim;
+  double xs[3], n[3], nn = 0, un = 0, rn = 0, r2 = 0;
+  wall_mirror_point(e, b, xs);
+  for (int d = 0; d < dim; d++) {
+    n[d] = xs[d] - p->x[d][b];
+    nn += n[d] * n[d];
+  }
+  for (int d = 0; d < dim; d++) {
+    n[d] /= sqrt(nn);
+    un += (p->v[d][i] - p->v[d][b]) * n[d];
+    rn += (p->x[d][i] - p->x[d][b]) * n[d];
+    r2 += (p->x[d][i] - p->x[d][b]) * (p->x[d][i] - p->x[d][b]);
+  }
+  if (un >= 0 || r2 >= e->kern.support2) return;
+  double f = -e->c->phases[p->phase[i]].c0 * un * kernel_w(&e->kern, r2) * pow(e->h, dim) / fabs(rn);
+  for (int d = 0; d < dim; d++) acc[d] += f * n[d];
+}
+
 /* The pair sums of fluid particle i over its neighbours. */
 static void spc_sums(const struct engine *e, long i, const struct neighbours *nb, struct spc_sums *s,
                      long *pairs) {
@@ -57,6 +81,7 @@ static void spc_sums(const struct engine *e, long i, const struct neighbours *nb
   const double *restrict rho = p->rho, *restrict pres = p->p, *restrict vol = e->w.vol;
   const double *restrict p_tilde = e->w.p_shepard;
   const int conventional = e->c->spc_model == SPC_CONVENTIONAL;
+  const int gas = !e->c->phases[p->phase[i]].incompressible;
   const int dim = p->dim, ph = p->phase[i];
   const struct phase *fi = &e->c->phases[ph];
   const double pi = pres[i], rhoi = rho[i], eta2 = 0.01 * e->h * e->h, support2 = e->kern.support2;
@@ -76,6 +101,7 @@ static void spc_sums(const struct engine *e, long i, const struct neighbours *nb
     const double mu_ij = harmonic_mean(mu[ph], wall ? mu[ph] : mu[p->phase[j]]);
     const double pi_ij = -dvdx / (r2 + eta2);   /* u_ji.r_ji / (r^2 + 0.01 h^2) */
     if (same || wall || conventional) s->div += dvdx * fv;
+    if (wall && gas) spc_wall_repulsion(e, i, j, s->repulsion);
     s->diff -= 2.0 * (rho_star - rhoi) * fv;    /* psi*_ij.gW_ij: r_ji.r_ij / r^2 = -1 */
     for (int d = 0; d < dim; d++) {
       s->grad_p[d] += (pi + p_star) * fv * dx[d];
@@ -94,7 +120,7 @@ static void same_phase_rhs(struct engine *e, long i, const struct neighbours *nb
   fluid_body_force(e, i, g);
   e->w.drho[i] = -p->rho[i] * s.div + e->c->delta * e->h * f->c0 * s.diff;
   for (int d = 0; d < p->dim; d++)
-    e->w.dv[d][i] = (-s.grad_p[d] + 2.0 * (p->dim + 2) * s.visc[d]) / p->rho[i] + g[d];
+    e->w.dv[d][i] = (-s.grad_p[d] + 2.0 * (p->dim + 2) * s.visc[d]) / p->rho[i] + s.repulsion[d] + g[d];
 }
 
 void pass_same_phase_rhs(struct engine *e) { pass_for_each_owned(e, same_phase_rhs, NULL); }

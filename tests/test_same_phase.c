@@ -20,16 +20,20 @@
  *     pairs do not conserve momentum (notes AMB-003-4): printed, not asserted;
  *  5. one step: dt = CFL h / c0, two rhs evaluations (the midpoint predictor-corrector of Eqs.
  *     40-42), a uniform state falls by g dt^2 / 2, and a particle left with a negative pressure
- *     ends at p = 0 (density threshold, Eq. 28).
+ *     ends at p = 0 (density threshold, Eq. 28);
+ *  6. the wall repulsion of Eq. 39 on a gas particle beside a wall ghost (a second engine: a gas
+ *     in a walled box), approaching and receding.
  * Usage: test_same_phase */
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
+#include <sys/stat.h>
 #include "case_load.h"
 #include "check.h"
 #include "engine_test.h"
 #include "engine.h"
 #include "eos.h"
+#include "passes.h"
 
 static const char *case_text =
     "name: same-phase-test\n"
@@ -285,6 +289,58 @@ static void test_threshold(struct engine *e) {
   CHECK(c[0] == 0 && c[1] == c[2], "density threshold: %ld negative, %ld of %ld at zero", c[0], c[1], c[2]);
 }
 
+/* A gas in a walled box, for the wall repulsion of Eq. 39. */
+static const char *wall_case_text =
+    "name: same-phase-wall-test\n"
+    "dimension: 2\n"
+    "scheme: same-phase-continuity\n"
+    "resolution: {dx: 0.05, origin: [0, 0]}\n"
+    "gravity: [0, 0]\n"
+    "time: {end: 1.0, cfl: 0.5}\n"
+    "domain: {min: [-0.3, -0.3], max: [1.3, 1.3]}\n"
+    "phases:\n"
+    "  - {name: air, rho0: 1, c0: 30, gamma: 1, p_background: 500}\n"
+    "fluids:\n"
+    "  - {phase: air, box: {min: [0, 0], max: [1, 1]}}\n"
+    "walls:\n"
+    "  - {box: {min: [0, 0], max: [1, 1]}, slip: free}\n"
+    "physics: {free_surface: off}\n"
+    "initial: {pressure: zero}\n"
+    "output: {progress_interval: 1000}\n";
+
+/* Eq. 39 between an owned gas particle of the first column at mid-height and the ghost of the
+ * first layer one dx to its left, all gas moving with u = (ux, 0): the ghost's mirrored velocity
+ * (ux_b = -ux) gives c0 2|ux| W(dx) h^2 / dx along +x while the gas approaches, nothing while it
+ * recedes. The pair exists on one rank; the count of checked pairs is agreed on. */
+static void test_wall_repulsion(struct engine *e) {
+  struct parts *p = &e->p;
+  const double dx = e->c->dx, u_x[2] = {-0.7, 0.7};
+  long checked = 0;
+  for (int k = 0; k < 2; k++) {
+    for (long i = 0; i < p->n_owned; i++)
+      if (p->phase[i] != PHASE_WALL) p->v[0][i] = u_x[k], p->v[1][i] = 0;
+    e->stage = 0;
+    engine_evaluate(e, 0);   /* the ghosts' velocities */
+    for (long i = 0; i < p->n_owned; i++) {
+      if (p->phase[i] == PHASE_WALL || fabs(p->x[0][i] - 0.5 * dx) > 1e-9 || fabs(p->x[1][i] - 0.525) > 1e-9) continue;
+      for (long b = 0; b < p->n_owned + p->n_halo; b++) {
+        if (p->phase[b] != PHASE_WALL || fabs(p->x[0][b] + 0.5 * dx) > 1e-9 || fabs(p->x[1][b] - p->x[1][i]) > 1e-9) continue;
+        double acc[3] = {0, 0, 0}, r2 = dx * dx;
+        spc_wall_repulsion(e, i, b, acc);
+        double expect = k == 0 ? 30.0 * (u_x[0] - p->v[0][b]) * -1.0 * kernel_w(&e->kern, r2) * e->h * e->h / dx : 0.0;
+        printf("wall repulsion, gas %s the wall: ghost u_x = %g, a = (%.6g, %.3g), Eq. 39 gives %.6g m/s^2\n",
+               k == 0 ? "approaching" : "receding", p->v[0][b], acc[0], acc[1], expect);
+        CHECK(fabs(p->v[0][b] + u_x[k]) <= 1e-12, "ghost velocity %.17g, want %g", p->v[0][b], -u_x[k]);
+        CHECK(fabs(acc[0] - expect) <= 1e-14 * fabs(expect) && acc[1] == 0 && (k == 1 || expect > 0),
+              "repulsion (%g, %g), expected (%g, 0)", acc[0], acc[1], expect);
+        checked++;
+      }
+    }
+  }
+  MPI_Allreduce(MPI_IN_PLACE, &checked, 1, MPI_LONG, MPI_SUM, e->comm);
+  CHECK(checked == 2, "wall-repulsion pairs checked: %ld", checked);
+}
+
 int main(int argc, char **argv) {
   MPI_Init(&argc, &argv);
   char dir[256] = "/tmp/mpsph-test-spc-XXXXXX";
@@ -309,5 +365,14 @@ int main(int argc, char **argv) {
   test_constant_pressure(&e);
   test_step(&e);
   test_threshold(&e);
+  engine_close_output(&e);
+  engine_free(&e);
+  char wall_dir[300];
+  snprintf(wall_dir, sizeof wall_dir, "%s/wall", dir);
+  if (e.rank == 0) CHECK(mkdir(wall_dir, 0700) == 0, "mkdir %s", wall_dir);
+  MPI_Barrier(MPI_COMM_WORLD);
+  static struct case_def c_wall;
+  if (engine_test_start(wall_dir, wall_case_text, &c_wall, &e)) return check_report("test_same_phase");
+  test_wall_repulsion(&e);
   return engine_test_finish(&e, dir, "test_same_phase");
 }
