@@ -25,6 +25,7 @@ enum free_surface_mode { FREE_SURFACE_AUTO = 0, FREE_SURFACE_ON, FREE_SURFACE_OF
 enum damper_form { DAMPER_DIFFERENCE = 0, DAMPER_SYMMETRIC };
 enum init_pressure { INIT_PRESSURE_HYDROSTATIC = 0, INIT_PRESSURE_ZERO };
 enum interface_pressure { IFACE_P_SUM = 0, IFACE_P_DENSITY_WEIGHTED };
+enum spc_model { SPC_PRESENT = 0, SPC_CONVENTIONAL };   /* paper 003 section 3 / section 2.3 */
 
 /** A geometric shape: box {min,max}, circle {centre,radius[,inner_radius]} (disc in 2D, ball in
  *  3D; an annulus or shell with inner_radius > 0) or polygon (2D only, vertices in order). [m] */
@@ -125,6 +126,8 @@ struct case_def {
   int interface_mode;        /* epsilon/phi strategies of paper 000 Appendix A (4 = the final model) */
   enum damper_form damper_form;
   enum interface_pressure interface_pressure;   /* other-phase pressure in the momentum pair sum */
+  enum spc_model spc_model;  /* scheme same-phase-continuity: paper 003's present model, or its
+                                conventional one (all-neighbour continuity, no Shepard pressure) */
   double interface_sharpness;   /* chi of the interface sharpness force (paper 000 Eq. 20), 0 = off */
   int limit_surface_shifting;   /* apply the 0.5 U_max limiter in the free-surface region too */
   double surface_tension;    /* sigma between the fluid phases (CSF, Adami et al. 2010) [N/m], 0 = off */

@@ -31,7 +31,8 @@ struct stage_op {
 
 /** Halo field sets (bit mask). */
 enum { HF_POS = 1, HF_VEL = 2, HF_RHO = 4, HF_P = 8, HF_MASS = 16, HF_GRAD_RHO = 32, HF_SHIFT = 64,
-       HF_DIV = 128, HF_SURFACE = 256, HF_INTERFACE_NORMAL = 512, HF_RHO_SHEPARD = 1024 };
+       HF_DIV = 128, HF_SURFACE = 256, HF_INTERFACE_NORMAL = 512, HF_RHO_SHEPARD = 1024,
+       HF_P_SHEPARD = 2048 };
 
 /** Terms and passes a scene needs, decided once at start-up from the case. */
 enum {
@@ -45,6 +46,9 @@ enum {
   FEAT_CENTRAL = 128,      /* quadratic potential body force */
   FEAT_SURFACE_TENSION = 256,  /* CSF surface tension between the fluid phases */
   FEAT_SHEPARD = 512,      /* scheme delta-sph: same-phase Shepard density and the pressure from it */
+  FEAT_SAME_PHASE_CONTINUITY = 1024,  /* scheme same-phase-continuity (paper 003): its own rhs pass,
+                                         Shepard pressure of other-phase neighbours, midpoint
+                                         predictor-corrector, density threshold */
   FEAT_RIEMANN = 4096,     /* scheme riemann: Riemann pair terms, density re-initialisation, dual time stepping */
   FEAT_TRANSPORT_VELOCITY = 8192   /* scheme riemann with a light phase: its transport-velocity shift */
 };
@@ -70,6 +74,8 @@ struct work {
                                       toward the other phase; 0 off the interface band */
   double *colour_grad;             /* FEAT_SURFACE_TENSION: |grad chi| on the band, else 0 [1/m] */
   double *kappa_curvature;         /* FEAT_SURFACE_TENSION: div n, 0 off the band [1/m] */
+  double *p_shepard;               /* FEAT_SAME_PHASE_CONTINUITY: Shepard pressure over the fluid of
+                                      every phase, the particle included [Pa] */
 };
 
 struct engine {

@@ -66,6 +66,21 @@ static inline const double *diffused_density(const struct engine *e) {
   return (e->features & FEAT_SHEPARD) ? e->w.rho_s : e->p.rho;
 }
 
+/** Scheme same-phase-continuity, per stage: the Shepard pressure of every owned fluid particle
+ *  over the fluid of all phases, itself included (paper 003 Eq. 26, AMB-003-2 of the notes) [Pa]. */
+void pass_shepard_pressure(struct engine *e);
+
+/** Scheme same-phase-continuity, per stage: drho/dt with the velocity divergence over same-phase
+ *  neighbours and walls and the delta diffusion over all neighbours, du/dt with the pressure
+ *  gradient and viscosity over all neighbours, other-phase neighbours entering with their
+ *  Shepard pressure and its density in the phase of i (paper 003 Eqs. 23-27). */
+void pass_same_phase_rhs(struct engine *e);
+
+/** Scheme same-phase-continuity: add to acc the wall repulsion of paper 003 Eq. 39 on gas
+ *  particle i from wall ghost b, c0 |(u_i - u_b).n_b| W_ib h^d / |r_ib.n_b| along the ghost's unit
+ *  normal n_b (toward its mirror point) while i approaches the wall, else nothing [m/s^2]. */
+void spc_wall_repulsion(const struct engine *e, long i, long b, double *acc);
+
 /** Per stage: particle volumes; renormalised density gradient over same-phase neighbours
  *  (paper 000 Eq. 7); velocity divergence over all neighbours; with shifting, the shifting
  *  velocity du of Eqs. 13-15. */

@@ -32,6 +32,7 @@ static const char *const BOOL_NAMES[] = {"false", "true", NULL};
 static const char *const FREE_SURFACE_NAMES[] = {"auto", "on", "off", NULL};
 static const char *const DAMPER_NAMES[] = {"difference", "symmetric", NULL};
 static const char *const IFACE_P_NAMES[] = {"sum", "density-weighted", NULL};
+static const char *const SPC_MODEL_NAMES[] = {"present", "conventional", NULL};
 static const char *const RAMP_NAMES[] = {"none", "linear", "smooth", NULL};
 
 /* The keys allowed in each mapping. */
@@ -59,7 +60,8 @@ static const char *const PHYSICS_KEYS[] = {"delta", "artificial_viscosity", "aco
                                            "shifting", "u_max", "tensile_control", "free_surface",
                                            "surface_band", "interface_mode", "damper_form",
                                            "interface_sharpness", "limit_surface_shifting",
-                                           "interface_pressure", "surface_tension", "wall_guard", NULL};
+                                           "interface_pressure", "surface_tension", "wall_guard", "spc_model",
+                                           NULL};
 static const char *const INITIAL_KEYS[] = {"pressure", NULL};
 static const char *const PROBE_KEYS[] = {"name", "kind", "position", "diameter", "axis",
                                          "interpolation", "phase", NULL};
@@ -796,12 +798,14 @@ static double default_u_max(const struct case_def *c) {
 
 static int read_physics(const struct map *root, struct case_def *c) {
   struct map ph;
-  int shifting, tic, fs, form, limit, iface_p;
-  int plus = c->scheme == SCHEME_DELTA_PLUS;   /* delta-sph: no shifting, TIC or damper (paper 001) */
+  int shifting, tic, fs, form, limit, iface_p, spc_model;
+  int plus = c->scheme == SCHEME_DELTA_PLUS;   /* delta-sph, same-phase-continuity: no shifting, TIC or
+                                                  damper (papers 001, 003) */
   double mode;
   if (sub(root, "physics", PHYSICS_KEYS, &ph) ||
       num(&ph, "delta", &R_NONNEGATIVE, 0.1, &c->delta) ||
-      num(&ph, "artificial_viscosity", &R_NONNEGATIVE, 0.1, &c->alpha) ||
+      num(&ph, "artificial_viscosity", &R_NONNEGATIVE, c->scheme == SCHEME_SAME_PHASE_CONTINUITY ? 0.05 : 0.1,
+          &c->alpha) ||   /* paper 003: alpha_w = 0.05 */
       num(&ph, "acoustic_damper", &R_NONNEGATIVE, plus ? 10 : 0, &c->acoustic_damper) ||
       choice(&ph, "shifting", SHIFTING_NAMES, plus ? SHIFTING_CONSISTENT : SHIFTING_NONE, &shifting) ||
       num(&ph, "u_max", &R_POSITIVE, default_u_max(c), &c->u_max) ||
@@ -814,7 +818,8 @@ static int read_physics(const struct map *root, struct case_def *c) {
       choice(&ph, "limit_surface_shifting", BOOL_NAMES, 0, &limit) ||
       choice(&ph, "interface_pressure", IFACE_P_NAMES, IFACE_P_SUM, &iface_p) ||
       num(&ph, "surface_tension", &R_NONNEGATIVE, 0, &c->surface_tension) ||
-      num(&ph, "wall_guard", &R_NONNEGATIVE, WALL_GUARD_DX, &c->wall_guard))
+      num(&ph, "wall_guard", &R_NONNEGATIVE, WALL_GUARD_DX, &c->wall_guard) ||
+      choice(&ph, "spc_model", SPC_MODEL_NAMES, SPC_PRESENT, &spc_model))
     return 1;
   c->shifting = (enum shifting_kind)shifting;
   c->tensile_control = tic;
@@ -823,6 +828,7 @@ static int read_physics(const struct map *root, struct case_def *c) {
   c->damper_form = (enum damper_form)form;
   c->limit_surface_shifting = limit;
   c->interface_pressure = (enum interface_pressure)iface_p;
+  c->spc_model = (enum spc_model)spc_model;
   return 0;
 }
 
@@ -1172,6 +1178,7 @@ static void put_tail(FILE *f, const struct case_def *c) {
   put_word(f, "  ", "interface_pressure", IFACE_P_NAMES[c->interface_pressure]);
   put_num(f, "  ", "surface_tension", c->surface_tension);
   put_num(f, "  ", "wall_guard", c->wall_guard);
+  put_word(f, "  ", "spc_model", SPC_MODEL_NAMES[c->spc_model]);
   fputs("initial:\n", f);
   put_word(f, "  ", "pressure", PRESSURE_NAMES[c->initial_pressure]);
   put_list_key(f, "probes", c->n_probes);

@@ -1,4 +1,5 @@
-/* engine_step.c — the stage pipeline, the RK4 step and the time-step limits (paper 000 Eq. 12). */
+/* engine_step.c — the stage pipeline, the RK4 step (the predictor-corrector of paper 003 with scheme
+ * same-phase-continuity) and the time-step limits (paper 000 Eq. 12). */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -46,6 +47,7 @@ static int work_slots(struct work *w, int dim, struct work_slot *t) {
   for (int d = 0; d < dim; d++) t[n++] = (struct work_slot){&w->interface_normal[d], 1, FEAT_SURFACE_TENSION};
   t[n++] = (struct work_slot){&w->colour_grad, 0, FEAT_SURFACE_TENSION};
   t[n++] = (struct work_slot){&w->kappa_curvature, 0, FEAT_SURFACE_TENSION};
+  t[n++] = (struct work_slot){&w->p_shepard, 1, FEAT_SAME_PHASE_CONTINUITY};
   return n;
 }
 
@@ -55,7 +57,8 @@ static int work_slots(struct work *w, int dim, struct work_slot *t) {
 static int optional_missing(const struct engine *e) {
   return ((e->features & FEAT_SHIFT) && !e->w.du[0]) || ((e->features & FEAT_SURFACE) && !e->w.surface) ||
          ((e->features & FEAT_SHEPARD) && !e->w.rho_s) ||
-         ((e->features & FEAT_SURFACE_TENSION) && !e->w.colour_grad);
+         ((e->features & FEAT_SURFACE_TENSION) && !e->w.colour_grad) ||
+         ((e->features & FEAT_SAME_PHASE_CONTINUITY) && !e->w.p_shepard);
 }
 
 void engine_work_reserve(struct engine *e) {
@@ -103,6 +106,7 @@ static int halo_field_list(struct engine *e, int mask, double **f) {
   if (mask & HF_DIV) f[n++] = e->w.div;
   if (mask & HF_SURFACE) f[n++] = e->w.surface;
   if (mask & HF_RHO_SHEPARD) f[n++] = e->w.rho_s;
+  if (mask & HF_P_SHEPARD) f[n++] = e->w.p_shepard;
   return n;
 }
 
@@ -127,6 +131,15 @@ static unsigned riemann_features(const struct case_def *c) {
   return f;
 }
 
+/* The gradient pass and the right-hand sides of schemes delta-plus and delta-sph. */
+static void add_gradients_and_rhs(struct engine *e, unsigned f) {
+  add_op(e, (f & FEAT_SHIFT) ? "gradients: renormalised density gradient, div u, shifting velocity"
+                             : "gradients: renormalised density gradient, div u", pass_gradients, 0, 0);
+  add_op(e, "halo: gradient-pass results", NULL,
+         HF_GRAD_RHO | ((f & FEAT_SHIFT) ? HF_SHIFT : 0) | ((f & FEAT_DAMPER) ? HF_DIV : 0), 0);
+  add_op(e, "fluid rhs: continuity and momentum", pass_fluid_rhs, 0, 0);
+}
+
 /* The terms this case needs (DESIGN.md data flow 3: what a scene does not use is not computed). */
 static unsigned case_features(const struct engine *e) {
   const struct case_def *c = e->c;
@@ -144,6 +157,7 @@ static unsigned case_features(const struct engine *e) {
   if (c->interface_sharpness > 0 && c->n_phases > 1) f |= FEAT_SHARPNESS;
   if (c->potential_omega > 0) f |= FEAT_CENTRAL;
   if (c->scheme == SCHEME_DELTA_SPH) f |= FEAT_SHEPARD;
+  if (c->scheme == SCHEME_SAME_PHASE_CONTINUITY) f |= FEAT_SAME_PHASE_CONTINUITY;
   if (c->surface_tension > 0 && c->n_phases > 1) f |= FEAT_SURFACE_TENSION;
   return f;
 }
@@ -204,11 +218,14 @@ void engine_assemble(struct engine *e) {
     add_op(e, "halo: free-surface flags (once per step)", NULL, HF_SURFACE, 1);
     add_op(e, "free-surface region: band around the detected particles (once per step)", pass_surface_band, 0, 1);
   }
-  add_op(e, (f & FEAT_SHIFT) ? "gradients: renormalised density gradient, div u, shifting velocity"
-                             : "gradients: renormalised density gradient, div u", pass_gradients, 0, 0);
-  add_op(e, "halo: gradient-pass results", NULL,
-         HF_GRAD_RHO | ((f & FEAT_SHIFT) ? HF_SHIFT : 0) | ((f & FEAT_DAMPER) ? HF_DIV : 0), 0);
-  add_op(e, "fluid rhs: continuity and momentum", pass_fluid_rhs, 0, 0);
+  if (f & FEAT_SAME_PHASE_CONTINUITY) {   /* its own pair passes (main.c refuses the delta-plus terms) */
+    if (e->c->spc_model == SPC_PRESENT) {
+      add_op(e, "Shepard pressure over all phases (same-phase-continuity)", pass_shepard_pressure, 0, 0);
+      add_op(e, "halo: Shepard pressures", NULL, HF_P_SHEPARD, 0);
+    }
+    add_op(e, "same-phase continuity and momentum rhs", pass_same_phase_rhs, 0, 0);
+  } else
+    add_gradients_and_rhs(e, f);
   if (f & FEAT_SURFACE_TENSION) {
     add_op(e, "surface tension: colour gradient, interface normals", pass_interface_normals, 0, 0);
     add_op(e, "halo: interface normals", NULL, HF_INTERFACE_NORMAL, 0);
@@ -225,7 +242,7 @@ void engine_print_pipeline(const struct engine *e) {
   static const char *names[] = {"wall ghosts", "shifting", "delta-u terms", "acoustic damper",
                                 "free-surface detection", "tensile instability control",
                                 "interface sharpness", "quadratic potential", "surface tension",
-                                "Shepard density"};
+                                "Shepard density", "same-phase continuity"};
   if (e->rank) return;
   printf("terms:");
   for (int k = 0; k < (int)(sizeof names / sizeof names[0]); k++)
@@ -334,20 +351,23 @@ static double capillary_step(const struct engine *e) {
 }
 
 /* Global time step of paper 000 Eq. 12: acoustic (with c_stab), acceleration, viscous, damper,
- * and the motion limit of the cell skin; *limit names the smallest term. Not yet cut to
- * time.end. */
+ * and the motion limit of the cell skin; *limit names the smallest term. Scheme
+ * same-phase-continuity takes paper 003's CFL h / c0 (section 3.3) without c_stab and without the
+ * acceleration and artificial-viscosity limits; the cell-skin limit (the neighbour lists' validity)
+ * and the physical viscous and capillary limits stay. Not yet cut to time.end. */
 static double time_step(struct engine *e, const char **limit) {
   const struct case_def *c = e->c;
+  const int paper003 = (e->features & FEAT_SAME_PHASE_CONTINUITY) != 0;
   double a_max, adv_max;
   reduce_first_stage(e, &a_max, &adv_max);
-  double c_eff = fmax(e->c_max, stable_sound_speed(e));
+  double c_eff = paper003 ? e->c_max : fmax(e->c_max, stable_sound_speed(e));
   double dt = c->cfl * e->h / c_eff;
   *limit = c_eff > e->c_max ? "acoustic (c_stab)" : "acoustic";
-  if (a_max > 0) limit_by(&dt, limit, 0.25 * sqrt(e->h / a_max), "acceleration");
+  if (a_max > 0 && !paper003) limit_by(&dt, limit, 0.25 * sqrt(e->h / a_max), "acceleration");
   if (adv_max > 0) limit_by(&dt, limit, MOTION_SAFETY * engine_shift_max(e) / adv_max, "motion (cell skin)");
   for (int ph = 0; ph < c->n_phases; ph++) {
     const struct phase *f = &c->phases[ph];
-    if (c->alpha > 0) limit_by(&dt, limit, e->h / (c->alpha * f->c0), "artificial viscosity");
+    if (c->alpha > 0 && !paper003) limit_by(&dt, limit, e->h / (c->alpha * f->c0), "artificial viscosity");
     if (f->viscosity > 0) limit_by(&dt, limit, 0.125 * e->h * e->h * f->rho0 / f->viscosity, "viscous");
     if ((e->features & FEAT_DAMPER) && f->incompressible)
       limit_by(&dt, limit, c->cfl * e->h / (c->acoustic_damper * f->c0), "acoustic damper");
@@ -389,32 +409,55 @@ static void move_ghosts(struct engine *e, const struct frame *start, double t) {
   }
 }
 
-/* Accumulate stage s's derivatives with RK4 weight and move owned fluid to the next stage state.
- * Positions advance with u + du (du = 0 without shifting); moving walls go where their motion
- * puts them at the next stage's time. */
-static void rk4_update(struct engine *e, int s, const struct frame *start) {
-  static const double weight[4] = {1, 2, 2, 1}, next[3] = {0.5, 0.5, 1.0};
+/* An explicit Runge-Kutta scheme of the form the update below runs: stage s + 1 evaluates
+ * x0 + next[s] dt k_s (and the time offset[s + 1] dt), the step ends at
+ * x0 + dt sum_s weight[s] k_s / divisor. */
+struct rk_scheme {
+  int stages;
+  double weight[4], next[3], offset[4], divisor;
+};
+
+/* The classical RK4 (paper 000), and the predictor-corrector of paper 003 Eqs. 40-42:
+ * phi^1/2 = phi^0 + dt/2 phi'^0, phi^1 = 2 (phi^0 + dt/2 phi'^1/2) - phi^0 = phi^0 + dt phi'^1/2
+ * (the explicit midpoint rule, two rhs evaluations per step). */
+static const struct rk_scheme RK4 = {4, {1, 2, 2, 1}, {0.5, 0.5, 1.0}, {0, 0.5, 0.5, 1.0}, 6.0};
+static const struct rk_scheme MIDPOINT_PC = {2, {0, 1}, {0.5}, {0, 0.5}, 1.0};
+
+/* The density threshold of paper 003 Eq. 28: a negative pressure is raised to 0 by setting the
+ * density to that of zero pressure in the particle's phase. */
+static void density_threshold(struct parts *p, long i, const struct phase *f) {
+  if (p->p[i] >= 0) return;
+  p->rho[i] = eos_density(f, 0.0);
+  p->p[i] = 0.0;
+}
+
+/* Accumulate stage s's derivatives with the scheme's weight and move owned fluid to the next
+ * stage state. Positions advance with u + du (du = 0 without shifting); moving walls go where
+ * their motion puts them at the next stage's time. */
+static void rk_update(struct engine *e, const struct rk_scheme *rk, int s, const struct frame *start) {
   struct parts *p = &e->p;
   struct work *w = &e->w;
-  double ws = weight[s], step = s < 3 ? next[s] * e->dt : e->dt / 6.0;
+  const int last = s == rk->stages - 1, threshold = (e->features & FEAT_SAME_PHASE_CONTINUITY) != 0;
+  double ws = rk->weight[s], step = !last ? rk->next[s] * e->dt : e->dt / rk->divisor;
   for (long i = 0; i < p->n_owned; i++) {
     if (p->phase[i] == PHASE_WALL) continue;
     for (int d = 0; d < p->dim; d++) {
       double dxdt = p->v[d][i] + (w->du[d] ? w->du[d][i] : 0.0);
       w->sum_x[d][i] = (s ? w->sum_x[d][i] : 0) + ws * dxdt;
       w->sum_v[d][i] = (s ? w->sum_v[d][i] : 0) + ws * w->dv[d][i];
-      p->x[d][i] = w->x0[d][i] + step * (s < 3 ? dxdt : w->sum_x[d][i]);
-      p->v[d][i] = w->v0[d][i] + step * (s < 3 ? w->dv[d][i] : w->sum_v[d][i]);
+      p->x[d][i] = w->x0[d][i] + step * (!last ? dxdt : w->sum_x[d][i]);
+      p->v[d][i] = w->v0[d][i] + step * (!last ? w->dv[d][i] : w->sum_v[d][i]);
     }
     w->sum_rho[i] = (s ? w->sum_rho[i] : 0) + ws * w->drho[i];
-    p->rho[i] = w->rho0[i] + step * (s < 3 ? w->drho[i] : w->sum_rho[i]);
+    p->rho[i] = w->rho0[i] + step * (!last ? w->drho[i] : w->sum_rho[i]);
     p->p[i] = eos_pressure(&e->c->phases[p->phase[i]], p->rho[i]);
+    if (threshold) density_threshold(p, i, &e->c->phases[p->phase[i]]);
   }
-  if (e->moving_walls) move_ghosts(e, start, e->step_start_time + (s < 3 ? next[s] : 1.0) * e->dt);
+  if (e->moving_walls) move_ghosts(e, start, e->step_start_time + (!last ? rk->next[s] : 1.0) * e->dt);
 }
 
 int engine_step(struct engine *e) {
-  static const double stage_offset[4] = {0, 0.5, 0.5, 1.0};
+  const struct rk_scheme *rk = (e->features & FEAT_SAME_PHASE_CONTINUITY) ? &MIDPOINT_PC : &RK4;
   struct frame start[CASE_MAX_WALLS];
   if (e->features & FEAT_RIEMANN) return engine_step_dual(e);
   engine_work_reserve(e);
@@ -422,9 +465,9 @@ int engine_step(struct engine *e) {
   e->step_start_time = e->time;
   e->step_start = e->step;
   wall_frames(e, e->time, start);
-  for (int s = 0; s < 4; s++) {
+  for (int s = 0; s < rk->stages; s++) {
     e->stage = s;
-    e->stage_time = e->time + stage_offset[s] * e->dt;
+    e->stage_time = e->time + rk->offset[s] * e->dt;
     wall_frames(e, e->stage_time, e->frames);
     engine_evaluate(e, s == 0);
     if (engine_check_derivatives(e)) return 2;
@@ -434,7 +477,7 @@ int engine_step(struct engine *e) {
       if (engine_check_dt(e, limit)) return 2;
       e->dt = fmin(e->dt, e->c->t_end - e->time);
     }
-    rk4_update(e, s, start);
+    rk_update(e, rk, s, start);
   }
   e->stage = -1;   /* between steps */
   e->time += e->dt;

@@ -54,6 +54,19 @@ static int parse_args(int argc, char **argv, struct args *a, char *err, size_t l
   return 0;
 }
 
+/* Scheme same-phase-continuity has its own pair pass (paper 003): the delta-plus terms are not in
+ * it, so a case asking for one is refused rather than run without it. */
+static int same_phase_terms(const struct case_def *c, char *err, size_t len) {
+  const char *key = c->shifting != SHIFTING_NONE ? "physics.shifting: only none"
+                    : c->tensile_control ? "physics.tensile_control: only false"
+                    : c->acoustic_damper > 0 ? "physics.acoustic_damper: only 0"
+                    : c->interface_sharpness > 0 ? "physics.interface_sharpness: only 0"
+                    : c->interface_pressure != IFACE_P_SUM ? "physics.interface_pressure: only sum" : NULL;
+  if (!key) return 0;
+  snprintf(err, len, "%s: %s with scheme same-phase-continuity (paper 003 has no such term)", c->source_file, key);
+  return 1;
+}
+
 /* The schemes this version implements; anything else is refused with a reason. */
 /* Scheme riemann: fixed walls only (its dual stepper does not move walls) and no surface tension. */
 static int riemann_supported(const struct case_def *c, char *err, size_t len) {
@@ -70,9 +83,13 @@ static int supported(const struct case_def *c, char *err, size_t len) {
   if (c->n_phases > 1)
     return snprintf(err, len, "%s: phases: this build (SINGLE_PHASE=1) runs single-phase cases only", c->source_file), 1;
 #endif
+  if (c->scheme != SCHEME_SAME_PHASE_CONTINUITY && c->spc_model != SPC_PRESENT)
+    return snprintf(err, len, "%s: physics.spc_model: conventional only with scheme same-phase-continuity", c->source_file), 1;
   if (c->scheme == SCHEME_RIEMANN) return riemann_supported(c, err, len);
   if (c->scheme == SCHEME_DELTA_PLUS || c->scheme == SCHEME_DELTA_SPH) return 0;
-  snprintf(err, len, "%s: scheme: only delta-plus, delta-sph and riemann are implemented in this version", c->source_file);
+  if (c->scheme == SCHEME_SAME_PHASE_CONTINUITY) return same_phase_terms(c, err, len);
+  snprintf(err, len, "%s: scheme: only delta-plus, delta-sph, same-phase-continuity and riemann are implemented in this version",
+           c->source_file);
   return 1;
 }
 

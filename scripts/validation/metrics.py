@@ -167,10 +167,10 @@ def first_crossing(t, p, level):
 
 
 def dambreak_impact(run, dx, reference, h=0.6, level=0.1):
-    """|t*_SPH - t*_exp| / t*_exp of the first rise of p* = p/(rho g H) at probe p1 through `level`,
+    """|t*_SPH - t*_exp| / t*_exp of the first rise of p* = (p - p_b)/(rho g H) at probe p1 through `level`,
     t* = t sqrt(g/H), against Buchner's P1 (digitised). Notes: the peak p* of both up to t* = 3.2."""
     pr = read_csv(os.path.join(run, "probes.csv"))
-    ts, ps = pr["time"] * math.sqrt(G / h), pr["p1"] / (1000.0 * G * h)
+    ts, ps = pr["time"] * math.sqrt(G / h), (pr["p1"] - background_pressure(run)) / (1000.0 * G * h)
     ref = read_reference(reference)
     p1 = ref["sensor"] == "P1"
     t_exp, p_exp = ref["t_star"][p1].astype(float), ref["p_star"][p1].astype(float)

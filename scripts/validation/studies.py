@@ -53,6 +53,23 @@ RIEMANN = {"scheme": "riemann", "kernel": "wendland-c2", "resolution.h_over_dx":
 RIEMANN_HYDRO = {**RIEMANN, "phases.0.c0": 62.6, "phases.0.gamma": 1, "phases.1.c0": 62.6, "phases.1.gamma": 1,
                  "physics.u_max": 6.26}
 RIEMANN_DB2 = {**RIEMANN, "phases.0.gamma": 1, "phases.1.c0": 48.5, "phases.1.gamma": 1, "physics.u_max": 4.85}
+# paper 003 (notes seeds-003-004 A3, A5, C1): one c0 = 50 m/s and the linear EOS in both phases,
+# p_b = 500 Pa, alpha_w = 0.05, mu_w : mu_g = 40 : 1 (the gas viscosity that adds to alpha's),
+# CFL 0.5
+SPC = "same-phase-continuity"
+SPC_PHASES = {"scheme": SPC, "physics.shifting": "none", "time.cfl": 0.5,
+              "phases.0.c0": 50, "phases.1.c0": 50, "phases.0.gamma": 1, "phases.1.gamma": 1,
+              "phases.0.p_background": 500, "phases.1.p_background": 500}
+
+
+def spc_sets(dx, h_over_dx=1.33, alpha=0.05):
+    """The --set overrides of a paper-003 rung at spacing dx [m]: mu_g = mu_w / 40 with
+    mu_w = alpha rho_w h c0 / 8 (2D), less the gas's own alpha part."""
+    mu_w = alpha * 1000 * h_over_dx * dx * 50 / 8
+    return {**SPC_PHASES, "physics.artificial_viscosity": alpha,
+            "phases.1.viscosity": round(mu_w / 40 - mu_w / 1000, 6)}
+
+
 DB2_COARSE = {"domain.min": "[-0.3,-0.3]", "domain.max": "[3.516,2.1]"}    # room for 4 ghost layers at dx = 0.048
 RT_RUNGS = [rung(dx, n, q, **{"time.end": 3.0, "output.interval": 0.05}) for dx, n, q in
             ((0.04, 1, True), (0.02, 2, True), (0.01, 2, False))]
@@ -83,7 +100,10 @@ STUDIES = [
                   rung(0.025, 2, label="delta-sph", **DELTA_SPH_HYDRO, **{"time.end": 1.0}),
                   rung(0.1, 1, True, label="riemann", **HYDRO_DOMAIN, **RIEMANN_HYDRO, **{"time.end": 1.0}),
                   rung(0.05, 2, True, label="riemann", **RIEMANN_HYDRO, **{"time.end": 1.0}),
-                  rung(0.025, 2, label="riemann", **RIEMANN_HYDRO, **{"time.end": 1.0})],
+                  rung(0.025, 2, label="riemann", **RIEMANN_HYDRO, **{"time.end": 1.0}),
+                  rung(0.1, 1, True, label=SPC, **HYDRO_DOMAIN, **spc_sets(0.1), **{"time.end": 1.0}),
+                  rung(0.05, 2, True, label=SPC, **spc_sets(0.05), **{"time.end": 1.0}),
+                  rung(0.025, 2, label=SPC, **spc_sets(0.025), **{"time.end": 1.0})],
         "plot": "hydrostatic",
     },
     drop_study("oscillating-drop", "Oscillating drop, one fluid (paper 001 section III.B)", 1.0,
@@ -121,7 +141,9 @@ STUDIES = [
                   # on the lattice: dx = 0.048 puts the first air row dx/2 above the last water row
                   rung(0.04, 2, True, label="riemann", **DB2_COARSE, **IMPACT_RUN, **RIEMANN_DB2),
                   rung(0.024, 2, label="riemann", **IMPACT_RUN, **RIEMANN_DB2),
-                  rung(0.012, 2, label="riemann", **IMPACT_RUN, **RIEMANN_DB2)]),
+                  rung(0.012, 2, label="riemann", **IMPACT_RUN, **RIEMANN_DB2),
+                  rung(0.048, 2, True, label=SPC, **DB2_COARSE, **IMPACT_RUN, **spc_sets(0.048)),
+                  rung(0.024, 2, label=SPC, **IMPACT_RUN, **spc_sets(0.024))]),
     {
         "id": "rayleigh-taylor-growth",
         "case": "rayleigh-taylor",
@@ -152,13 +174,17 @@ STUDIES = [
     },
 ]
 
+# the standing wave's Re = 500 comes from its physical viscosities (alpha 0); mu_g = mu_w / 40
+SW_SPC = {**SPC_PHASES, "phases.1.viscosity": 0.1566}
 SW_RUNGS = [rung(0.05, 1, True), rung(0.025, 2, True), rung(0.0125, 2, True), rung(0.00625, 2),
             rung(0.05, 2, True, label="delta-plus, water-air (paper 003)", case="standing-wave"),
             rung(0.025, 2, label="delta-plus, water-air (paper 003)", case="standing-wave"),
             rung(0.05, 2, True, label="delta-plus, water-air, density-weighted interface pressure",
                  case="standing-wave", **WEIGHTED),
             rung(0.025, 2, label="delta-plus, water-air, density-weighted interface pressure",
-                 case="standing-wave", **WEIGHTED)]
+                 case="standing-wave", **WEIGHTED),
+            rung(0.05, 2, True, label=SPC, case="standing-wave", **SW_SPC),
+            rung(0.025, 2, label=SPC, case="standing-wave", **SW_SPC)]
 STUDIES += [
     {
         "id": "standing-wave-period",
