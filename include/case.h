@@ -25,6 +25,7 @@ enum free_surface_mode { FREE_SURFACE_AUTO = 0, FREE_SURFACE_ON, FREE_SURFACE_OF
 enum damper_form { DAMPER_DIFFERENCE = 0, DAMPER_SYMMETRIC };
 enum init_pressure { INIT_PRESSURE_HYDROSTATIC = 0, INIT_PRESSURE_ZERO };
 enum interface_pressure { IFACE_P_SUM = 0, IFACE_P_DENSITY_WEIGHTED };
+enum dissipation_form { DISSIPATION_CONSISTENT = 0, DISSIPATION_PRINTED };
 
 /** A geometric shape: box {min,max}, circle {centre,radius[,inner_radius]} (disc in 2D, ball in
  *  3D; an annulus or shell with inner_radius > 0) or polygon (2D only, vertices in order). [m] */
@@ -128,6 +129,8 @@ struct case_def {
   double interface_sharpness;   /* chi of the interface sharpness force (paper 000 Eq. 20), 0 = off */
   int limit_surface_shifting;   /* apply the 0.5 U_max limiter in the free-surface region too */
   double surface_tension;    /* sigma between the fluid phases (CSF, Adami et al. 2010) [N/m], 0 = off */
+  enum dissipation_form dissipation_form;   /* scheme generalized-dissipation: paper 004 Eq. 49 as
+                                               printed, or its dimensionally consistent form */
   /* parallel */
   double repartition_threshold;  /* re-partition when (max-min)/mean load exceeds this */
   long repartition_every;        /* force a re-partition every N steps (0 = only on imbalance) */

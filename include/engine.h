@@ -31,7 +31,8 @@ struct stage_op {
 
 /** Halo field sets (bit mask). */
 enum { HF_POS = 1, HF_VEL = 2, HF_RHO = 4, HF_P = 8, HF_MASS = 16, HF_GRAD_RHO = 32, HF_SHIFT = 64,
-       HF_DIV = 128, HF_SURFACE = 256, HF_INTERFACE_NORMAL = 512, HF_RHO_SHEPARD = 1024 };
+       HF_DIV = 128, HF_SURFACE = 256, HF_INTERFACE_NORMAL = 512, HF_RHO_SHEPARD = 1024,
+       HF_GD = 4096 /* scheme generalized-dissipation: Shepard sum Gamma and <grad p>^L */ };
 
 /** Terms and passes a scene needs, decided once at start-up from the case. */
 enum {
@@ -44,7 +45,8 @@ enum {
   FEAT_SHARPNESS = 64,     /* interface sharpness force */
   FEAT_CENTRAL = 128,      /* quadratic potential body force */
   FEAT_SURFACE_TENSION = 256,  /* CSF surface tension between the fluid phases */
-  FEAT_SHEPARD = 512       /* scheme delta-sph: same-phase Shepard density and the pressure from it */
+  FEAT_SHEPARD = 512,      /* scheme delta-sph: same-phase Shepard density and the pressure from it */
+  FEAT_GENERALIZED_DISSIPATION = 2048   /* scheme generalized-dissipation (paper 004) */
 };
 
 /** Work arrays of the scheme, sized to the particle capacity (those read at halo slots) or to
@@ -68,6 +70,9 @@ struct work {
                                       toward the other phase; 0 off the interface band */
   double *colour_grad;             /* FEAT_SURFACE_TENSION: |grad chi| on the band, else 0 [1/m] */
   double *kappa_curvature;         /* FEAT_SURFACE_TENSION: div n, 0 off the band [1/m] */
+  double *gd_gamma;                /* FEAT_GENERALIZED_DISSIPATION: Shepard sum incl. self, 1 on
+                                      wall ghosts [-] */
+  double *gd_grad_p[3];            /* FEAT_GENERALIZED_DISSIPATION: renormalised <grad p>^L [Pa/m] */
 };
 
 struct engine {

@@ -14,6 +14,13 @@ static inline double pair_separation(const struct parts *p, int dim, long i, lon
   return r2;
 }
 
+/** Body force per unit mass at particle i: gravity and the quadratic potential [m/s^2]. */
+static inline void body_force(const struct engine *e, long i, double *f) {
+  const struct case_def *c = e->c;
+  double w2 = c->potential_omega * c->potential_omega;
+  for (int d = 0; d < e->p.dim; d++) f[d] = c->gravity[d] - w2 * (e->p.x[d][i] - c->potential_centre[d]);
+}
+
 /** Work on owned particle i with its neighbour list (empty for wall ghosts). */
 typedef void (*particle_fn)(struct engine *e, long i, const struct neighbours *nb);
 
@@ -95,5 +102,27 @@ void pass_interface_normals(struct engine *e);
  *  kappa = div n (renormalised divergence) [1/m] and the CSF acceleration
  *  -sigma kappa n |grad chi| / rho added to du/dt of owned fluid particles (Brackbill et al. 1992). */
 void pass_surface_tension(struct engine *e);
+
+/** Scheme generalized-dissipation, first pass: the Shepard sum Gamma (with the particle itself)
+ *  and the renormalised pressure gradient <grad p>^L over all neighbours, phases and wall ghosts
+ *  of owned fluid (paper 004 Eqs. 9, 47-48; 0 where the matrix is near-singular); Gamma = 1 and
+ *  no gradient for wall ghosts. */
+void pass_gd_gradients(struct engine *e);
+
+/** Scheme generalized-dissipation, second pass: continuity with the generalized density
+ *  dissipation and its volume correction factor (paper 004 Eqs. 7, 36, 46 or 49 by
+ *  physics.dissipation_form) and momentum with Grenier's pressure gradient, the Hu-Adams
+ *  viscosity and the body forces (Eqs. 9, 10) of owned fluid. */
+void pass_gd_rhs(struct engine *e);
+
+/** Dynamic viscosity of phase ph in scheme generalized-dissipation: the phase's own plus the
+ *  artificial viscosity alpha h c0 rho0 / (2 (dim + 2)) [Pa s]. */
+double gd_viscosity(const struct engine *e, int ph);
+
+/** The time step of paper 004 Eq. 23 [s]: cfl h / (c_max + u_max) (u_max the largest advection
+ *  speed [m/s]; the paper's cfl is 0.25), 0.25 (h/a)^1/2 with a the larger of |g| and a_max
+ *  (the largest acceleration [m/s^2]), 0.125 rho0 h^2 / mu per phase and, with surface tension,
+ *  0.5 (rho0_min h^3 / (2 pi sigma))^1/2; *limit names the smallest. */
+double gd_time_step(const struct engine *e, double a_max, double u_max, const char **limit);
 
 #endif

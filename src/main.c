@@ -54,14 +54,32 @@ static int parse_args(int argc, char **argv, struct args *a, char *err, size_t l
   return 0;
 }
 
+/* Scheme generalized-dissipation (paper 004) has none of paper 000's shifting, tensile control,
+ * acoustic damper, sharpness force or interface-pressure options: refuse them by name. */
+static int gd_unsupported(const struct case_def *c, char *err, size_t len) {
+  const char *key = c->shifting != SHIFTING_NONE ? "shifting"
+                    : c->tensile_control           ? "tensile_control"
+                    : c->acoustic_damper > 0       ? "acoustic_damper"
+                    : c->interface_sharpness > 0   ? "interface_sharpness"
+                    : c->interface_pressure != IFACE_P_SUM ? "interface_pressure" : NULL;
+  if (!key) return 0;
+  snprintf(err, len, "%s: physics.%s: not part of scheme generalized-dissipation (use none, false, 0 or sum)",
+           c->source_file, key);
+  return 1;
+}
+
 /* The schemes this version implements; anything else is refused with a reason. */
 static int supported(const struct case_def *c, char *err, size_t len) {
 #ifdef MPSPH_SINGLE_PHASE
   if (c->n_phases > 1)
     return snprintf(err, len, "%s: phases: this build (SINGLE_PHASE=1) runs single-phase cases only", c->source_file), 1;
 #endif
+  const char *src = c->source_file;
+  if (c->dissipation_form != DISSIPATION_CONSISTENT && c->scheme != SCHEME_GENERALIZED_DISSIPATION)
+    return snprintf(err, len, "%s: physics.dissipation_form: only scheme generalized-dissipation has one", src), 1;
+  if (c->scheme == SCHEME_GENERALIZED_DISSIPATION) return gd_unsupported(c, err, len);
   if (c->scheme == SCHEME_DELTA_PLUS || c->scheme == SCHEME_DELTA_SPH) return 0;
-  snprintf(err, len, "%s: scheme: only delta-plus and delta-sph are implemented in this version", c->source_file);
+  snprintf(err, len, "%s: scheme: only delta-plus, delta-sph and generalized-dissipation are implemented in this version", src);
   return 1;
 }
 

@@ -143,13 +143,6 @@ static void dispatch(const struct engine *e, const struct centre *ci, const stru
   else du ? PHASED(3, 1) : PHASED(3, 0);
 }
 
-/* Body force per unit mass at particle i: gravity and the quadratic potential. */
-static void body_force(const struct engine *e, long i, double *f) {
-  const struct case_def *c = e->c;
-  double w2 = c->potential_omega * c->potential_omega;
-  for (int d = 0; d < e->p.dim; d++) f[d] = c->gravity[d] - w2 * (e->p.x[d][i] - c->potential_centre[d]);
-}
-
 /* Combine the sums into drho/dt and du/dt of particle i. */
 static void finish(struct engine *e, const struct centre *ci, const struct fluid_sums *s) {
   const struct parts *p = &e->p;
