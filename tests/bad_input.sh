@@ -63,7 +63,13 @@ refuses h-large 'resolution\.h_over_dx: got .20., expected a number > 0 and <= 1
   run h-large --set resolution.h_over_dx=20
 refuses band 'phases\.0\.density_band: got \[1\.1, 2\], expected a list \[min_ratio, max_ratio\]' -- \
   run band --set 'phases.0.density_band=[1.1, 2]'
-refuses scheme 'scheme: only delta-plus and delta-sph are implemented' -- run scheme --set scheme=riemann
+refuses scheme 'scheme: only delta-plus, delta-sph and generalized-dissipation are implemented' -- run scheme --set scheme=riemann
+refuses dissform 'physics\.dissipation_form: only scheme generalized-dissipation has one' -- \
+  run dissform --set physics.dissipation_form=printed
+refuses gdshift 'physics\.shifting: not part of scheme generalized-dissipation' -- \
+  run gdshift --set scheme=generalized-dissipation --set physics.shifting=consistent
+refuses dissvalue 'physics\.dissipation_form: got .literal., allowed values: consistent, printed' -- \
+  run dissvalue --set physics.dissipation_form=literal
 # Geometry.
 sed 's/max: \[1, 1\]}}$/max: [1, 1]}}\n  - {phase: water, box: {min: [0.5, 0.5], max: [0.9, 0.9]}}/' \
   "$case" > "$tmp/overlap.yaml"
