@@ -90,14 +90,16 @@ static void gd_rhs(struct engine *e, long i, const struct neighbours *nb) {
   const struct parts *p = &e->p;
   const double *restrict vol = e->w.vol, *restrict pres = p->p, *restrict gam = e->w.gd_gamma;
   const int dim = p->dim, ph = p->phase[i];
-  const double eta2 = 0.01 * e->h * e->h, mui = gd_viscosity(e, ph), pgi = pres[i] / gam[i];
+  double mu[CASE_MAX_PHASES];   /* mu of each phase, walls taking the phase of i */
+  for (int k = 0; k < e->c->n_phases; k++) mu[k] = gd_viscosity(e, k);
+  const double eta2 = 0.01 * e->h * e->h, mui = mu[ph], pgi = pres[i] / gam[i];
   double div = 0, diss = 0, force[3] = {0, 0, 0}, g[3];
   struct neighbours it = *nb;
   for (long j; neighbours_next(&it, &j);) {
     double dx[3], r2 = pair_separation(p, dim, i, j, dx), dvdx = 0;
     if (r2 >= e->kern.support2) continue;
     double fv = kernel_f(&e->kern, r2) * vol[j];
-    double muj = p->phase[j] == PHASE_WALL ? mui : gd_viscosity(e, p->phase[j]);
+    double muj = p->phase[j] == PHASE_WALL ? mui : mu[p->phase[j]];
     double mu_ij = mui + muj > 0 ? 4.0 * mui * muj / (mui + muj) : 0.0;
     double visc = mu_ij * fv * r2 / (r2 + eta2), pg = pgi + pres[j] / gam[j];
     for (int d = 0; d < dim; d++) {
