@@ -26,6 +26,7 @@ enum damper_form { DAMPER_DIFFERENCE = 0, DAMPER_SYMMETRIC };
 enum init_pressure { INIT_PRESSURE_HYDROSTATIC = 0, INIT_PRESSURE_ZERO };
 enum interface_pressure { IFACE_P_SUM = 0, IFACE_P_DENSITY_WEIGHTED };
 enum spc_model { SPC_PRESENT = 0, SPC_CONVENTIONAL };   /* paper 003 section 3 / section 2.3 */
+enum dissipation_form { DISSIPATION_CONSISTENT = 0, DISSIPATION_PRINTED };
 
 /** A geometric shape: box {min,max}, circle {centre,radius[,inner_radius]} (disc in 2D, ball in
  *  3D; an annulus or shell with inner_radius > 0) or polygon (2D only, vertices in order). [m] */
@@ -132,6 +133,8 @@ struct case_def {
   int limit_surface_shifting;   /* apply the 0.5 U_max limiter in the free-surface region too */
   double surface_tension;    /* sigma between the fluid phases (CSF, Adami et al. 2010) [N/m], 0 = off */
   double wall_guard;         /* normal-velocity correction within this many dx of a wall, 0 = off */
+  enum dissipation_form dissipation_form;   /* scheme generalized-dissipation: paper 004 Eq. 49 as
+                                               printed, or its dimensionally consistent form */
   /* parallel */
   double repartition_threshold;  /* re-partition when (max-min)/mean load exceeds this */
   long repartition_every;        /* force a re-partition every N steps (0 = only on imbalance) */

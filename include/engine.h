@@ -32,7 +32,8 @@ struct stage_op {
 /** Halo field sets (bit mask). */
 enum { HF_POS = 1, HF_VEL = 2, HF_RHO = 4, HF_P = 8, HF_MASS = 16, HF_GRAD_RHO = 32, HF_SHIFT = 64,
        HF_DIV = 128, HF_SURFACE = 256, HF_INTERFACE_NORMAL = 512, HF_RHO_SHEPARD = 1024,
-       HF_P_SHEPARD = 2048 };
+       HF_P_SHEPARD = 2048,
+       HF_GD = 4096 /* scheme generalized-dissipation: Shepard sum Gamma and <grad p>^L */ };
 
 /** Terms and passes a scene needs, decided once at start-up from the case. */
 enum {
@@ -49,6 +50,7 @@ enum {
   FEAT_SAME_PHASE_CONTINUITY = 1024,  /* scheme same-phase-continuity (paper 003): its own rhs pass,
                                          Shepard pressure of other-phase neighbours, midpoint
                                          predictor-corrector, density threshold */
+  FEAT_GENERALIZED_DISSIPATION = 2048,  /* scheme generalized-dissipation (paper 004) */
   FEAT_RIEMANN = 4096,     /* scheme riemann: Riemann pair terms, density re-initialisation, dual time stepping */
   FEAT_TRANSPORT_VELOCITY = 8192   /* scheme riemann with a light phase: its transport-velocity shift */
 };
@@ -76,6 +78,9 @@ struct work {
   double *kappa_curvature;         /* FEAT_SURFACE_TENSION: div n, 0 off the band [1/m] */
   double *p_shepard;               /* FEAT_SAME_PHASE_CONTINUITY: Shepard pressure over the fluid of
                                       every phase, the particle included [Pa] */
+  double *gd_gamma;                /* FEAT_GENERALIZED_DISSIPATION: Shepard sum incl. self, 1 on
+                                      wall ghosts [-] */
+  double *gd_grad_p[3];            /* FEAT_GENERALIZED_DISSIPATION: renormalised <grad p>^L [Pa/m] */
 };
 
 struct engine {

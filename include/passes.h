@@ -14,6 +14,13 @@ static inline double pair_separation(const struct parts *p, int dim, long i, lon
   return r2;
 }
 
+/** Body force per unit mass at particle i: gravity and the quadratic potential [m/s^2]. */
+static inline void body_acceleration(const struct engine *e, long i, double *f) {
+  const struct case_def *c = e->c;
+  double w2 = c->potential_omega * c->potential_omega;
+  for (int d = 0; d < e->p.dim; d++) f[d] = c->gravity[d] - w2 * (e->p.x[d][i] - c->potential_centre[d]);
+}
+
 /** Work on owned particle i with its neighbour list (empty for wall ghosts). */
 typedef void (*particle_fn)(struct engine *e, long i, const struct neighbours *nb);
 
@@ -117,13 +124,6 @@ void pass_surface_tension(struct engine *e);
  *  from it, and the part of its shifting velocity that points into the wall. */
 void pass_wall_guard(struct engine *e);
 
-/** Body force per unit mass at particle i: gravity and the quadratic potential [m/s^2]. */
-static inline void body_acceleration(const struct engine *e, long i, double *f) {
-  const struct case_def *c = e->c;
-  double w2 = c->potential_omega * c->potential_omega;
-  for (int d = 0; d < e->p.dim; d++) f[d] = c->gravity[d] - w2 * (e->p.x[d][i] - c->potential_centre[d]);
-}
-
 /** Scheme riemann: 1 if phase ph is a light phase: a gas (not `incompressible`) and a phase with a
  *  larger rho0 exists. */
 int riemann_light_phase(const struct case_def *c, int ph);
@@ -145,5 +145,27 @@ void pass_riemann_continuity(struct engine *e);
 /** Scheme riemann: the transport-velocity acceleration -(2 p0_tv / rho_i) sum_j V_j grad_i W_ij of
  *  the owned light-phase particles into dv (0 for the heavy phase) [m/s^2] (Eq. 12). */
 void pass_transport_acceleration(struct engine *e);
+
+/** Scheme generalized-dissipation, first pass: the Shepard sum Gamma (with the particle itself)
+ *  and the renormalised pressure gradient <grad p>^L over all neighbours, phases and wall ghosts
+ *  of owned fluid (paper 004 Eqs. 9, 47-48; 0 where the matrix is near-singular); Gamma = 1 and
+ *  no gradient for wall ghosts. */
+void pass_gd_gradients(struct engine *e);
+
+/** Scheme generalized-dissipation, second pass: continuity with the generalized density
+ *  dissipation and its volume correction factor (paper 004 Eqs. 7, 36, 46 or 49 by
+ *  physics.dissipation_form) and momentum with Grenier's pressure gradient, the Hu-Adams
+ *  viscosity and the body forces (Eqs. 9, 10) of owned fluid. */
+void pass_gd_rhs(struct engine *e);
+
+/** Dynamic viscosity of phase ph in scheme generalized-dissipation: the phase's own plus the
+ *  artificial viscosity alpha h c0 rho0 / (2 (dim + 2)) [Pa s]. */
+double gd_viscosity(const struct engine *e, int ph);
+
+/** The time step of paper 004 Eq. 23 [s]: cfl h / (c_max + u_max) (u_max the largest advection
+ *  speed [m/s]; the paper's cfl is 0.25), 0.25 (h/a)^1/2 with a the larger of |g| and a_max
+ *  (the largest acceleration [m/s^2]), 0.125 rho0 h^2 / mu per phase and, with surface tension,
+ *  0.5 (rho0_min h^3 / (2 pi sigma))^1/2; *limit names the smallest. */
+double gd_time_step(const struct engine *e, double a_max, double u_max, const char **limit);
 
 #endif

@@ -33,6 +33,7 @@ static const char *const FREE_SURFACE_NAMES[] = {"auto", "on", "off", NULL};
 static const char *const DAMPER_NAMES[] = {"difference", "symmetric", NULL};
 static const char *const IFACE_P_NAMES[] = {"sum", "density-weighted", NULL};
 static const char *const SPC_MODEL_NAMES[] = {"present", "conventional", NULL};
+static const char *const DISSIPATION_NAMES[] = {"consistent", "printed", NULL};
 static const char *const RAMP_NAMES[] = {"none", "linear", "smooth", NULL};
 
 /* The keys allowed in each mapping. */
@@ -61,7 +62,7 @@ static const char *const PHYSICS_KEYS[] = {"delta", "artificial_viscosity", "aco
                                            "surface_band", "interface_mode", "damper_form",
                                            "interface_sharpness", "limit_surface_shifting",
                                            "interface_pressure", "surface_tension", "wall_guard", "spc_model",
-                                           NULL};
+                                           "dissipation_form", NULL};
 static const char *const INITIAL_KEYS[] = {"pressure", NULL};
 static const char *const PROBE_KEYS[] = {"name", "kind", "position", "diameter", "axis",
                                          "interpolation", "phase", NULL};
@@ -756,13 +757,14 @@ static int read_lattice_origin(const struct map *r, struct case_def *c) {
 
 static int read_run(const struct map *root, struct case_def *c) {
   struct map r, t, o;
-  double h_default = c->kernel == KERNEL_GAUSSIAN ? 1.33 : 2.0;
+  int gd = c->scheme == SCHEME_GENERALIZED_DISSIPATION;   /* paper 004: h = 1.1 dx, dt 0.25 h/(c + |u|) */
+  double h_default = c->kernel == KERNEL_GAUSSIAN ? (gd ? 1.1 : 1.33) : 2.0;
   return sub(root, "resolution", RESOLUTION_KEYS, &r) ||
          num(&r, "dx", &R_POSITIVE, REQUIRED, &c->dx) ||
          num(&r, "h_over_dx", &R_H_OVER_DX, h_default, &c->h_over_dx) ||
          read_lattice_origin(&r, c) ||
          sub(root, "time", TIME_KEYS, &t) || num(&t, "end", &R_POSITIVE, REQUIRED, &c->t_end) ||
-         num(&t, "cfl", &R_CFL, 1.0, &c->cfl) ||
+         num(&t, "cfl", &R_CFL, gd ? 0.25 : 1.0, &c->cfl) ||
          lnum(&t, "max_steps", &R_COUNT, 0, &c->max_steps) ||
          sub(root, "output", OUTPUT_KEYS, &o) ||
          num(&o, "interval", &R_NONNEGATIVE, 0, &c->output_interval) ||
@@ -798,14 +800,14 @@ static double default_u_max(const struct case_def *c) {
 
 static int read_physics(const struct map *root, struct case_def *c) {
   struct map ph;
-  int shifting, tic, fs, form, limit, iface_p, spc_model;
-  int plus = c->scheme == SCHEME_DELTA_PLUS;   /* delta-sph, same-phase-continuity: no shifting, TIC or
-                                                  damper (papers 001, 003) */
+  int shifting, tic, fs, form, limit, iface_p, spc_model, diss;
+  int plus = c->scheme == SCHEME_DELTA_PLUS;   /* the others: no shifting, TIC or damper (papers 001-004) */
+  int gd = c->scheme == SCHEME_GENERALIZED_DISSIPATION;   /* paper 004: delta 0.5, physical viscosity only */
+  int spc = c->scheme == SCHEME_SAME_PHASE_CONTINUITY;     /* paper 003: alpha_w = 0.05 */
   double mode;
   if (sub(root, "physics", PHYSICS_KEYS, &ph) ||
-      num(&ph, "delta", &R_NONNEGATIVE, 0.1, &c->delta) ||
-      num(&ph, "artificial_viscosity", &R_NONNEGATIVE, c->scheme == SCHEME_SAME_PHASE_CONTINUITY ? 0.05 : 0.1,
-          &c->alpha) ||   /* paper 003: alpha_w = 0.05 */
+      num(&ph, "delta", &R_NONNEGATIVE, gd ? 0.5 : 0.1, &c->delta) ||
+      num(&ph, "artificial_viscosity", &R_NONNEGATIVE, gd ? 0.0 : spc ? 0.05 : 0.1, &c->alpha) ||
       num(&ph, "acoustic_damper", &R_NONNEGATIVE, plus ? 10 : 0, &c->acoustic_damper) ||
       choice(&ph, "shifting", SHIFTING_NAMES, plus ? SHIFTING_CONSISTENT : SHIFTING_NONE, &shifting) ||
       num(&ph, "u_max", &R_POSITIVE, default_u_max(c), &c->u_max) ||
@@ -819,8 +821,10 @@ static int read_physics(const struct map *root, struct case_def *c) {
       choice(&ph, "interface_pressure", IFACE_P_NAMES, IFACE_P_SUM, &iface_p) ||
       num(&ph, "surface_tension", &R_NONNEGATIVE, 0, &c->surface_tension) ||
       num(&ph, "wall_guard", &R_NONNEGATIVE, WALL_GUARD_DX, &c->wall_guard) ||
-      choice(&ph, "spc_model", SPC_MODEL_NAMES, SPC_PRESENT, &spc_model))
+      choice(&ph, "spc_model", SPC_MODEL_NAMES, SPC_PRESENT, &spc_model) ||
+      choice(&ph, "dissipation_form", DISSIPATION_NAMES, DISSIPATION_CONSISTENT, &diss))
     return 1;
+  c->dissipation_form = (enum dissipation_form)diss;
   c->shifting = (enum shifting_kind)shifting;
   c->tensile_control = tic;
   c->free_surface = (enum free_surface_mode)fs;
@@ -1179,6 +1183,8 @@ static void put_tail(FILE *f, const struct case_def *c) {
   put_num(f, "  ", "surface_tension", c->surface_tension);
   put_num(f, "  ", "wall_guard", c->wall_guard);
   put_word(f, "  ", "spc_model", SPC_MODEL_NAMES[c->spc_model]);
+  if (c->scheme == SCHEME_GENERALIZED_DISSIPATION)   /* the other schemes' files stay as they were */
+    put_word(f, "  ", "dissipation_form", DISSIPATION_NAMES[c->dissipation_form]);
   fputs("initial:\n", f);
   put_word(f, "  ", "pressure", PRESSURE_NAMES[c->initial_pressure]);
   put_list_key(f, "probes", c->n_probes);

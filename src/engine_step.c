@@ -48,6 +48,8 @@ static int work_slots(struct work *w, int dim, struct work_slot *t) {
   t[n++] = (struct work_slot){&w->colour_grad, 0, FEAT_SURFACE_TENSION};
   t[n++] = (struct work_slot){&w->kappa_curvature, 0, FEAT_SURFACE_TENSION};
   t[n++] = (struct work_slot){&w->p_shepard, 1, FEAT_SAME_PHASE_CONTINUITY};
+  t[n++] = (struct work_slot){&w->gd_gamma, 1, FEAT_GENERALIZED_DISSIPATION};
+  for (int d = 0; d < dim; d++) t[n++] = (struct work_slot){&w->gd_grad_p[d], 1, FEAT_GENERALIZED_DISSIPATION};
   return n;
 }
 
@@ -58,7 +60,8 @@ static int optional_missing(const struct engine *e) {
   return ((e->features & FEAT_SHIFT) && !e->w.du[0]) || ((e->features & FEAT_SURFACE) && !e->w.surface) ||
          ((e->features & FEAT_SHEPARD) && !e->w.rho_s) ||
          ((e->features & FEAT_SURFACE_TENSION) && !e->w.colour_grad) ||
-         ((e->features & FEAT_SAME_PHASE_CONTINUITY) && !e->w.p_shepard);
+         ((e->features & FEAT_SAME_PHASE_CONTINUITY) && !e->w.p_shepard) ||
+         ((e->features & FEAT_GENERALIZED_DISSIPATION) && !e->w.gd_gamma);
 }
 
 void engine_work_reserve(struct engine *e) {
@@ -99,6 +102,7 @@ static int halo_field_list(struct engine *e, int mask, double **f) {
     if (mask & HF_GRAD_RHO) f[n++] = e->w.grad_rho[d];
     if (mask & HF_SHIFT) f[n++] = e->w.du[d];
     if (mask & HF_INTERFACE_NORMAL) f[n++] = e->w.interface_normal[d];
+    if (mask & HF_GD) f[n++] = e->w.gd_grad_p[d];
   }
   if (mask & HF_RHO) f[n++] = p->rho;
   if (mask & HF_P) f[n++] = p->p;
@@ -107,6 +111,7 @@ static int halo_field_list(struct engine *e, int mask, double **f) {
   if (mask & HF_SURFACE) f[n++] = e->w.surface;
   if (mask & HF_RHO_SHEPARD) f[n++] = e->w.rho_s;
   if (mask & HF_P_SHEPARD) f[n++] = e->w.p_shepard;
+  if (mask & HF_GD) f[n++] = e->w.gd_gamma;
   return n;
 }
 
@@ -159,6 +164,7 @@ static unsigned case_features(const struct engine *e) {
   if (c->scheme == SCHEME_DELTA_SPH) f |= FEAT_SHEPARD;
   if (c->scheme == SCHEME_SAME_PHASE_CONTINUITY) f |= FEAT_SAME_PHASE_CONTINUITY;
   if (c->surface_tension > 0 && c->n_phases > 1) f |= FEAT_SURFACE_TENSION;
+  if (c->scheme == SCHEME_GENERALIZED_DISSIPATION) f |= FEAT_GENERALIZED_DISSIPATION;
   return f;
 }
 
@@ -226,6 +232,17 @@ void engine_assemble(struct engine *e) {
     add_op(e, "same-phase continuity and momentum rhs", pass_same_phase_rhs, 0, 0);
   } else
     add_gradients_and_rhs(e, f);
+  if (f & FEAT_GENERALIZED_DISSIPATION) {
+    add_op(e, "gradients: Shepard sum Gamma, renormalised pressure gradient", pass_gd_gradients, 0, 0);
+    add_op(e, "halo: Gamma, pressure gradients", NULL, HF_GD, 0);
+    add_op(e, "fluid rhs: continuity with generalized dissipation, momentum", pass_gd_rhs, 0, 0);
+  } else {
+    add_op(e, (f & FEAT_SHIFT) ? "gradients: renormalised density gradient, div u, shifting velocity"
+                               : "gradients: renormalised density gradient, div u", pass_gradients, 0, 0);
+    add_op(e, "halo: gradient-pass results", NULL,
+           HF_GRAD_RHO | ((f & FEAT_SHIFT) ? HF_SHIFT : 0) | ((f & FEAT_DAMPER) ? HF_DIV : 0), 0);
+    add_op(e, "fluid rhs: continuity and momentum", pass_fluid_rhs, 0, 0);
+  }
   if (f & FEAT_SURFACE_TENSION) {
     add_op(e, "surface tension: colour gradient, interface normals", pass_interface_normals, 0, 0);
     add_op(e, "halo: interface normals", NULL, HF_INTERFACE_NORMAL, 0);
@@ -242,7 +259,7 @@ void engine_print_pipeline(const struct engine *e) {
   static const char *names[] = {"wall ghosts", "shifting", "delta-u terms", "acoustic damper",
                                 "free-surface detection", "tensile instability control",
                                 "interface sharpness", "quadratic potential", "surface tension",
-                                "Shepard density", "same-phase continuity"};
+                                "Shepard density", "same-phase continuity", "generalized dissipation"};
   if (e->rank) return;
   printf("terms:");
   for (int k = 0; k < (int)(sizeof names / sizeof names[0]); k++)
@@ -350,21 +367,17 @@ static double capillary_step(const struct engine *e) {
   return 0.25 * sqrt(rho_min * e->h * e->h * e->h / (2.0 * 3.14159265358979323846 * e->c->surface_tension));
 }
 
-/* Global time step of paper 000 Eq. 12: acoustic (with c_stab), acceleration, viscous, damper,
- * and the motion limit of the cell skin; *limit names the smallest term. Scheme
- * same-phase-continuity takes paper 003's CFL h / c0 (section 3.3) without c_stab and without the
- * acceleration and artificial-viscosity limits; the cell-skin limit (the neighbour lists' validity)
- * and the physical viscous and capillary limits stay. Not yet cut to time.end. */
-static double time_step(struct engine *e, const char **limit) {
+/* The time-step limits of paper 000 Eq. 12: acoustic (with c_stab), acceleration, viscous,
+ * damper; *limit names the smallest term. Scheme same-phase-continuity takes paper 003's
+ * CFL h / c0 (section 3.3) without c_stab and without the acceleration and artificial-viscosity
+ * limits; the physical viscous and capillary limits stay. */
+static double delta_plus_step(const struct engine *e, double a_max, const char **limit) {
   const struct case_def *c = e->c;
   const int paper003 = (e->features & FEAT_SAME_PHASE_CONTINUITY) != 0;
-  double a_max, adv_max;
-  reduce_first_stage(e, &a_max, &adv_max);
   double c_eff = paper003 ? e->c_max : fmax(e->c_max, stable_sound_speed(e));
   double dt = c->cfl * e->h / c_eff;
   *limit = c_eff > e->c_max ? "acoustic (c_stab)" : "acoustic";
   if (a_max > 0 && !paper003) limit_by(&dt, limit, 0.25 * sqrt(e->h / a_max), "acceleration");
-  if (adv_max > 0) limit_by(&dt, limit, MOTION_SAFETY * engine_shift_max(e) / adv_max, "motion (cell skin)");
   for (int ph = 0; ph < c->n_phases; ph++) {
     const struct phase *f = &c->phases[ph];
     if (c->alpha > 0 && !paper003) limit_by(&dt, limit, e->h / (c->alpha * f->c0), "artificial viscosity");
@@ -373,6 +386,18 @@ static double time_step(struct engine *e, const char **limit) {
       limit_by(&dt, limit, c->cfl * e->h / (c->acoustic_damper * f->c0), "acoustic damper");
   }
   if (e->features & FEAT_SURFACE_TENSION) limit_by(&dt, limit, capillary_step(e), "capillary");
+  return dt;
+}
+
+/* Global time step: the scheme's limits (paper 000 Eq. 12, or paper 004 Eq. 23 for
+ * generalized-dissipation) and the motion limit of the cell skin; *limit names the smallest
+ * term. Not yet cut to time.end. */
+static double time_step(struct engine *e, const char **limit) {
+  double a_max, adv_max;
+  reduce_first_stage(e, &a_max, &adv_max);
+  double dt = (e->features & FEAT_GENERALIZED_DISSIPATION) ? gd_time_step(e, a_max, adv_max, limit)
+                                                          : delta_plus_step(e, a_max, limit);
+  if (adv_max > 0) limit_by(&dt, limit, MOTION_SAFETY * engine_shift_max(e) / adv_max, "motion (cell skin)");
   return dt;
 }
 

@@ -15,6 +15,7 @@
 #include <string.h>
 #include "eos.h"
 #include "passes.h"
+#include "wall_guard.h"
 
 #define DUAL_ADVECTION_CFL 0.25   /* Eq. 24 */
 #define DUAL_MOTION_SAFETY 0.75   /* fraction of the cell skin's motion allowance used by dt_ad */
@@ -161,14 +162,18 @@ static int check_step(struct engine *e, double dt, const char *limit) {
   return status;
 }
 
-/* One acoustic sub-step of dt [s]. Returns 0 or 2. */
+/* One acoustic sub-step of dt [s]; the wall guard (doc/theory.md §5) acts on the acceleration
+ * and on the new velocity of each sub-step. Returns 0 or 2. */
 static int acoustic_substep(struct engine *e, double dt) {
+  int guard = (e->features & FEAT_WALLS) && e->c->wall_guard > 0;
   compress(e, 0.5 * dt);
   move(e, 0.5 * dt, 0);
   refresh(e);
   run(e, OP_MOMENTUM);
   if (engine_check_derivatives(e)) return 2;
+  if (guard) pass_wall_guard(e);
   accelerate(e, dt);
+  if (guard) wall_guard_apply(e);
   move(e, 0.5 * dt, 0);
   refresh(e);
   run(e, OP_CONTINUITY);

@@ -67,7 +67,20 @@ static int same_phase_terms(const struct case_def *c, char *err, size_t len) {
   return 1;
 }
 
-/* The schemes this version implements; anything else is refused with a reason. */
+/* Scheme generalized-dissipation (paper 004) has none of paper 000's shifting, tensile control,
+ * acoustic damper, sharpness force or interface-pressure options: refuse them by name. */
+static int gd_unsupported(const struct case_def *c, char *err, size_t len) {
+  const char *key = c->shifting != SHIFTING_NONE ? "shifting"
+                    : c->tensile_control           ? "tensile_control"
+                    : c->acoustic_damper > 0       ? "acoustic_damper"
+                    : c->interface_sharpness > 0   ? "interface_sharpness"
+                    : c->interface_pressure != IFACE_P_SUM ? "interface_pressure" : NULL;
+  if (!key) return 0;
+  snprintf(err, len, "%s: physics.%s: not part of scheme generalized-dissipation (use none, false, 0 or sum)",
+           c->source_file, key);
+  return 1;
+}
+
 /* Scheme riemann: fixed walls only (its dual stepper does not move walls) and no surface tension. */
 static int riemann_supported(const struct case_def *c, char *err, size_t len) {
   for (int w = 0; w < c->n_walls; w++)
@@ -78,19 +91,23 @@ static int riemann_supported(const struct case_def *c, char *err, size_t len) {
   return 0;
 }
 
+/* What this build and the chosen scheme can run; anything else is refused with a reason. */
 static int supported(const struct case_def *c, char *err, size_t len) {
+  const char *src = c->source_file;
 #ifdef MPSPH_SINGLE_PHASE
   if (c->n_phases > 1)
-    return snprintf(err, len, "%s: phases: this build (SINGLE_PHASE=1) runs single-phase cases only", c->source_file), 1;
+    return snprintf(err, len, "%s: phases: this build (SINGLE_PHASE=1) runs single-phase cases only", src), 1;
 #endif
   if (c->scheme != SCHEME_SAME_PHASE_CONTINUITY && c->spc_model != SPC_PRESENT)
-    return snprintf(err, len, "%s: physics.spc_model: conventional only with scheme same-phase-continuity", c->source_file), 1;
-  if (c->scheme == SCHEME_RIEMANN) return riemann_supported(c, err, len);
-  if (c->scheme == SCHEME_DELTA_PLUS || c->scheme == SCHEME_DELTA_SPH) return 0;
-  if (c->scheme == SCHEME_SAME_PHASE_CONTINUITY) return same_phase_terms(c, err, len);
-  snprintf(err, len, "%s: scheme: only delta-plus, delta-sph, same-phase-continuity and riemann are implemented in this version",
-           c->source_file);
-  return 1;
+    return snprintf(err, len, "%s: physics.spc_model: conventional only with scheme same-phase-continuity", src), 1;
+  if (c->dissipation_form != DISSIPATION_CONSISTENT && c->scheme != SCHEME_GENERALIZED_DISSIPATION)
+    return snprintf(err, len, "%s: physics.dissipation_form: only scheme generalized-dissipation has one", src), 1;
+  switch (c->scheme) {
+    case SCHEME_RIEMANN: return riemann_supported(c, err, len);
+    case SCHEME_SAME_PHASE_CONTINUITY: return same_phase_terms(c, err, len);
+    case SCHEME_GENERALIZED_DISSIPATION: return gd_unsupported(c, err, len);
+    default: return 0;
+  }
 }
 
 static int run_case(const struct case_def *c, const struct args *a) {

@@ -63,12 +63,16 @@ refuses h-large 'resolution\.h_over_dx: got .20., expected a number > 0 and <= 1
   run h-large --set resolution.h_over_dx=20
 refuses band 'phases\.0\.density_band: got \[1\.1, 2\], expected a list \[min_ratio, max_ratio\]' -- \
   run band --set 'phases.0.density_band=[1.1, 2]'
-refuses scheme 'scheme: only delta-plus, delta-sph, same-phase-continuity and riemann are implemented' -- \
-  run scheme --set scheme=generalized-dissipation
 refuses riemann-tension 'physics\.surface_tension: not available with scheme riemann' -- \
   run riemann-tension --set scheme=riemann --set physics.surface_tension=0.07
 refuses spc-shifting 'physics\.shifting: only none with scheme same-phase-continuity' -- \
   run spc-shifting --set scheme=same-phase-continuity --set physics.shifting=consistent
+refuses dissform 'physics\.dissipation_form: only scheme generalized-dissipation has one' -- \
+  run dissform --set physics.dissipation_form=printed
+refuses gdshift 'physics\.shifting: not part of scheme generalized-dissipation' -- \
+  run gdshift --set scheme=generalized-dissipation --set physics.shifting=consistent
+refuses dissvalue 'physics\.dissipation_form: got .literal., allowed values: consistent, printed' -- \
+  run dissvalue --set physics.dissipation_form=literal
 # Geometry.
 sed 's/max: \[1, 1\]}}$/max: [1, 1]}}\n  - {phase: water, box: {min: [0.5, 0.5], max: [0.9, 0.9]}}/' \
   "$case" > "$tmp/overlap.yaml"

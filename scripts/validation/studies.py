@@ -16,15 +16,17 @@ def rung(dx, np_=2, quick=False, label="delta-plus", case=None, **sets):
     return {"dx": dx, "np": np_, "quick": quick, "label": label, "case": case, "sets": sets}
 
 
-def drop_study(case, title, radius, ladder):
-    """An oscillating-drop study of a case (drop radius [m]) on a ladder of (dx, ranks, quick)."""
+def drop_study(case, title, radius, ladder, extra=()):
+    """An oscillating-drop study of a case (drop radius [m]) on a ladder of (dx, ranks, quick), with
+    `extra` rungs (other schemes) appended."""
     return {"id": case, "case": case, "title": title, "length": ("R", radius),
             "reference": "incompressible elliptic-drop solution (notes seeds-000-001 section 3.8)",
             "error": "max |a_SPH - a| / R over one period", "threshold": 0.02,
             "metric": functools.partial(metrics.drop_semi_axis, radius=radius),
             "rungs": [rung(dx, n, q, **{"output.interval": 0.1}) for dx, n, q in ladder] +
                      [rung(dx, n, q, label="delta-sph", **DELTA_SPH, **{"output.interval": 0.1}) for dx, n, q in ladder] +
-                     [rung(dx, n, q, label="riemann", **RIEMANN, **{"output.interval": 0.1}) for dx, n, q in ladder],
+                     [rung(dx, n, q, label="riemann", **RIEMANN, **{"output.interval": 0.1}) for dx, n, q in ladder] +
+                     list(extra),
             "plot": "drop"}
 
 
@@ -70,6 +72,7 @@ def spc_sets(dx, h_over_dx=1.33, alpha=0.05):
             "phases.1.viscosity": round(mu_w / 40 - mu_w / 1000, 6)}
 
 
+GD = {"scheme": "generalized-dissipation", "physics.shifting": "none"}
 DB2_COARSE = {"domain.min": "[-0.3,-0.3]", "domain.max": "[3.516,2.1]"}    # room for 4 ghost layers at dx = 0.048
 RT_RUNGS = [rung(dx, n, q, **{"time.end": 3.0, "output.interval": 0.05}) for dx, n, q in
             ((0.04, 1, True), (0.02, 2, True), (0.01, 2, False))]
@@ -103,14 +106,19 @@ STUDIES = [
                   rung(0.025, 2, label="riemann", **RIEMANN_HYDRO, **{"time.end": 1.0}),
                   rung(0.1, 1, True, label=SPC, **HYDRO_DOMAIN, **spc_sets(0.1), **{"time.end": 1.0}),
                   rung(0.05, 2, True, label=SPC, **spc_sets(0.05), **{"time.end": 1.0}),
-                  rung(0.025, 2, label=SPC, **spc_sets(0.025), **{"time.end": 1.0})],
+                  rung(0.025, 2, label=SPC, **spc_sets(0.025), **{"time.end": 1.0}),
+                  rung(0.1, 1, True, label="generalized-dissipation", **HYDRO_DOMAIN, **GD, **{"time.end": 1.0}),
+                  rung(0.05, 2, True, label="generalized-dissipation", **GD, **{"time.end": 1.0}),
+                  rung(0.025, 2, label="generalized-dissipation", **GD, **{"time.end": 1.0})],
         "plot": "hydrostatic",
     },
     drop_study("oscillating-drop", "Oscillating drop, one fluid (paper 001 section III.B)", 1.0,
                [(0.08, 1, True), (0.04, 2, True), (0.02, 2, False)]),
     drop_study("oscillating-drop-2fluid",
                "Oscillating drop in a lighter fluid, density ratio 100 (paper 001 section III.B)", 0.5,
-               [(0.04, 2, True), (0.02, 2, False), (0.01, 2, False)]),
+               [(0.04, 2, True), (0.02, 2, False), (0.01, 2, False)],
+               [rung(dx, n, q, label="generalized-dissipation", **GD, **{"output.interval": 0.1})
+                for dx, n, q in [(0.04, 2, True), (0.02, 2, False)]]),
     {
         "id": "dambreak-front",
         "case": "dambreak-1phase",
