@@ -230,19 +230,12 @@ void engine_assemble(struct engine *e) {
       add_op(e, "halo: Shepard pressures", NULL, HF_P_SHEPARD, 0);
     }
     add_op(e, "same-phase continuity and momentum rhs", pass_same_phase_rhs, 0, 0);
-  } else
-    add_gradients_and_rhs(e, f);
-  if (f & FEAT_GENERALIZED_DISSIPATION) {
+  } else if (f & FEAT_GENERALIZED_DISSIPATION) {
     add_op(e, "gradients: Shepard sum Gamma, renormalised pressure gradient", pass_gd_gradients, 0, 0);
     add_op(e, "halo: Gamma, pressure gradients", NULL, HF_GD, 0);
     add_op(e, "fluid rhs: continuity with generalized dissipation, momentum", pass_gd_rhs, 0, 0);
-  } else {
-    add_op(e, (f & FEAT_SHIFT) ? "gradients: renormalised density gradient, div u, shifting velocity"
-                               : "gradients: renormalised density gradient, div u", pass_gradients, 0, 0);
-    add_op(e, "halo: gradient-pass results", NULL,
-           HF_GRAD_RHO | ((f & FEAT_SHIFT) ? HF_SHIFT : 0) | ((f & FEAT_DAMPER) ? HF_DIV : 0), 0);
-    add_op(e, "fluid rhs: continuity and momentum", pass_fluid_rhs, 0, 0);
-  }
+  } else
+    add_gradients_and_rhs(e, f);
   if (f & FEAT_SURFACE_TENSION) {
     add_op(e, "surface tension: colour gradient, interface normals", pass_interface_normals, 0, 0);
     add_op(e, "halo: interface normals", NULL, HF_INTERFACE_NORMAL, 0);

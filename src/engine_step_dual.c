@@ -196,6 +196,7 @@ static int advection_start(struct engine *e) {
   e->dt = dual_advection_dt(e, a_tv);
   if (check_step(e, e->dt, "advection")) return 2;
   e->dt = fmin(e->dt, e->c->t_end - e->time);
+  if (a_tv > 0 && (e->features & FEAT_WALLS) && e->c->wall_guard > 0) pass_wall_guard(e);   /* no shift into a wall */
   if (a_tv > 0) move(e, 0.5 * e->dt * e->dt, 1);
   refresh(e);
   run(e, OP_CONTINUITY);

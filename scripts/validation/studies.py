@@ -73,6 +73,7 @@ def spc_sets(dx, h_over_dx=1.33, alpha=0.05):
 
 
 GD = {"scheme": "generalized-dissipation", "physics.shifting": "none"}
+SPC_CASE_PHASES = {"scheme": SPC, "physics.shifting": "none"}   # paper 003's scheme with the case's phases
 DB2_COARSE = {"domain.min": "[-0.3,-0.3]", "domain.max": "[3.516,2.1]"}    # room for 4 ghost layers at dx = 0.048
 RT_RUNGS = [rung(dx, n, q, **{"time.end": 3.0, "output.interval": 0.05}) for dx, n, q in
             ((0.04, 1, True), (0.02, 2, True), (0.01, 2, False))]
@@ -117,7 +118,8 @@ STUDIES = [
     drop_study("oscillating-drop-2fluid",
                "Oscillating drop in a lighter fluid, density ratio 100 (paper 001 section III.B)", 0.5,
                [(0.04, 2, True), (0.02, 2, False), (0.01, 2, False)],
-               [rung(dx, n, q, label="generalized-dissipation", **GD, **{"output.interval": 0.1})
+               [rung(dx, n, q, label=label, **sets, **{"output.interval": 0.1})
+                for label, sets in (("generalized-dissipation", GD), (SPC, SPC_CASE_PHASES))
                 for dx, n, q in [(0.04, 2, True), (0.02, 2, False)]]),
     {
         "id": "dambreak-front",
