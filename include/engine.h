@@ -52,7 +52,10 @@ enum {
                                          predictor-corrector, density threshold */
   FEAT_GENERALIZED_DISSIPATION = 2048,  /* scheme generalized-dissipation (paper 004) */
   FEAT_RIEMANN = 4096,     /* scheme riemann: Riemann pair terms, density re-initialisation, dual time stepping */
-  FEAT_TRANSPORT_VELOCITY = 8192   /* scheme riemann with a light phase: its transport-velocity shift */
+  FEAT_TRANSPORT_VELOCITY = 8192,  /* scheme riemann with a light phase: its transport-velocity shift */
+  FEAT_DIFFUSION = 16384,  /* density diffusion (delta > 0); in delta-plus and delta-sph also the
+                              renormalised density gradient it reads */
+  FEAT_VISCOSITY = 32768   /* artificial (alpha > 0) or laminar (a phase's viscosity > 0) viscosity */
 };
 
 /** Work arrays of the scheme, sized to the particle capacity (those read at halo slots) or to

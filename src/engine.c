@@ -246,10 +246,13 @@ static void free_surface_auto(struct engine *e) {
   engine_print_pipeline(e);
 }
 
+/* Print a progress line (rank 0, every output.progress_interval wall seconds); the ETA runs to
+ * whichever of time.end and time.max_steps comes first. */
 static void progress(struct engine *e) {
   double now = MPI_Wtime();
   if (e->rank || now < e->next_progress) return;
   double elapsed = now - e->wall_start, frac = e->time / e->c->t_end;
+  if (e->c->max_steps) frac = fmax(frac, (double)e->step / e->c->max_steps);
   long n = e->p.n_owned;
   printf("step %ld  t = %.6g s  dt = %.3g s  %.3g particle-steps/s/rank  ETA %.0f s\n", e->step,
          e->time, e->dt, n * (double)e->step / elapsed, frac > 0 ? elapsed * (1 - frac) / frac : 0.0);

@@ -26,7 +26,7 @@ struct work_slot {
 static int work_slots(struct work *w, int dim, struct work_slot *t) {
   int n = 0;
   for (int d = 0; d < dim; d++) {
-    t[n++] = (struct work_slot){&w->grad_rho[d], 1, 0};
+    t[n++] = (struct work_slot){&w->grad_rho[d], 1, FEAT_DIFFUSION};
     t[n++] = (struct work_slot){&w->du[d], 1, FEAT_SHIFT};
     t[n++] = (struct work_slot){&w->normal[d], 0, FEAT_SURFACE};
     t[n++] = (struct work_slot){&w->dv[d], 0, 0};
@@ -57,7 +57,7 @@ static int work_slots(struct work *w, int dim, struct work_slot *t) {
 
 /* 1 if an optional array of a feature that is on has not been allocated yet. */
 static int optional_missing(const struct engine *e) {
-  return ((e->features & FEAT_SHIFT) && !e->w.du[0]) || ((e->features & FEAT_SURFACE) && !e->w.surface) ||
+  return ((e->features & FEAT_SHIFT) && !e->w.du[0]) || ((e->features & FEAT_DIFFUSION) && !e->w.grad_rho[0]) || ((e->features & FEAT_SURFACE) && !e->w.surface) ||
          ((e->features & FEAT_SHEPARD) && !e->w.rho_s) ||
          ((e->features & FEAT_SURFACE_TENSION) && !e->w.colour_grad) ||
          ((e->features & FEAT_SAME_PHASE_CONTINUITY) && !e->w.p_shepard) ||
@@ -138,10 +138,12 @@ static unsigned riemann_features(const struct case_def *c) {
 
 /* The gradient pass and the right-hand sides of schemes delta-plus and delta-sph. */
 static void add_gradients_and_rhs(struct engine *e, unsigned f) {
-  add_op(e, (f & FEAT_SHIFT) ? "gradients: renormalised density gradient, div u, shifting velocity"
-                             : "gradients: renormalised density gradient, div u", pass_gradients, 0, 0);
-  add_op(e, "halo: gradient-pass results", NULL,
-         HF_GRAD_RHO | ((f & FEAT_SHIFT) ? HF_SHIFT : 0) | ((f & FEAT_DAMPER) ? HF_DIV : 0), 0);
+  static const char *names[2][2] = {{"gradients: div u", "gradients: div u, shifting velocity"},
+                                    {"gradients: renormalised density gradient, div u",
+                                     "gradients: renormalised density gradient, div u, shifting velocity"}};
+  add_op(e, names[(f & FEAT_DIFFUSION) != 0][(f & FEAT_SHIFT) != 0], pass_gradients, 0, 0);
+  int halo = ((f & FEAT_DIFFUSION) ? HF_GRAD_RHO : 0) | ((f & FEAT_SHIFT) ? HF_SHIFT : 0) | ((f & FEAT_DAMPER) ? HF_DIV : 0);
+  if (halo) add_op(e, "halo: gradient-pass results", NULL, halo, 0);
   add_op(e, "fluid rhs: continuity and momentum", pass_fluid_rhs, 0, 0);
 }
 
@@ -150,8 +152,13 @@ static unsigned case_features(const struct engine *e) {
   const struct case_def *c = e->c;
   if (c->scheme == SCHEME_RIEMANN) return riemann_features(c);
   unsigned f = 0;
-  int liquid = 0;
-  for (int ph = 0; ph < c->n_phases; ph++) liquid |= c->phases[ph].incompressible;
+  int liquid = 0, viscous = c->alpha > 0;
+  for (int ph = 0; ph < c->n_phases; ph++) {
+    liquid |= c->phases[ph].incompressible;
+    viscous |= c->phases[ph].viscosity > 0;
+  }
+  if (c->delta > 0) f |= FEAT_DIFFUSION;
+  if (viscous) f |= FEAT_VISCOSITY;
   if (c->n_walls) f |= FEAT_WALLS;
   if (c->shifting != SHIFTING_NONE) f |= FEAT_SHIFT;
   if (c->shifting == SHIFTING_CONSISTENT) f |= FEAT_DELTA_U;
@@ -259,6 +266,8 @@ void engine_print_pipeline(const struct engine *e) {
     if (e->features & (1u << k)) printf(" [%s]", names[k]);
   if (e->features & FEAT_RIEMANN) printf(" [Riemann SPH, density re-initialisation, dual time stepping]");
   if (e->features & FEAT_TRANSPORT_VELOCITY) printf(" [transport velocity of the light phases]");
+  if (e->features & FEAT_DIFFUSION) printf(" [density diffusion]");
+  if (e->features & FEAT_VISCOSITY) printf(" [viscosity]");
   printf("\npipeline per %s (%d operations):\n", (e->features & FEAT_RIEMANN) ? "advection step" : "RK stage", e->n_ops);
   for (int k = 0; k < e->n_ops; k++) printf("  %d. %s\n", k + 1, e->ops[k].name);
 }

@@ -39,14 +39,17 @@ static inline double other_phase_pressure(double pi, double rhoi, double pj, dou
 /* Loop over the neighbours of i; terms DU (delta-u), DAMP (acoustic damper: 1 symmetric,
  * 2 difference form), PHASES (0: one fluid phase, so no pair is of the other-phase relation;
  * 1: several phases; 2: several phases with the sharpness force) and the dimension are
- * compile-time constants in each specialisation. The sums are accumulated in locals and the arrays read through restrict
+ * compile-time constants in each specialisation; so is DISS (1: viscosity and density diffusion
+ * both on), and with DISS = 0 each of the two is a loop-invariant switch (off: its pair terms are
+ * skipped). The sums are accumulated in locals and the arrays read through restrict
  * pointers, so that nothing goes through memory inside the loop. */
 static inline __attribute__((always_inline)) void fluid_sums(const struct engine *e,
                                                              const struct centre *ci,
                                                              const struct neighbours *nb,
                                                              struct fluid_sums *out, long *pairs,
                                                              const int dim, const int DU,
-                                                             const int DAMP, const int PHASES) {
+                                                             const int DAMP, const int PHASES,
+                                                             const int DISS) {
   const struct parts *p = &e->p;
   const struct work *w = &e->w;
   const double *restrict x[3] = {p->x[0], p->x[1], p->x[2]}, *restrict v[3] = {p->v[0], p->v[1], p->v[2]};
@@ -59,13 +62,14 @@ static inline __attribute__((always_inline)) void fluid_sums(const struct engine
   const int ph = ci->phase;
   const double pi = pres[i], rhoi = rho[i], eta2 = 0.01 * e->h * e->h, support2 = e->kern.support2;
   const double p_sign = ci->p_sign;
+  const int visc = DISS || (e->features & FEAT_VISCOSITY), diff = DISS || (e->features & FEAT_DIFFUSION);
   const int weighted = PHASES && e->c->interface_pressure == IFACE_P_DENSITY_WEIGHTED;
   const double rho0i = e->c->phases[ph].rho0;
   double xi[3], vi[3], dui[3] = {0, 0, 0}, gri[3];
   for (int d = 0; d < dim; d++) {
     xi[d] = x[d][i];
     vi[d] = v[d][i];
-    gri[d] = grad_rho[d][i];
+    gri[d] = diff ? grad_rho[d][i] : 0.0;
     if (DU) dui[d] = du[d][i];
   }
   struct fluid_sums s = {0};
@@ -109,11 +113,14 @@ static inline __attribute__((always_inline)) void fluid_sums(const struct engine
     if (PHASES == 2 && rel == PAIR_OTHER)
       for (int d = 0; d < dim; d++) s.sharp[d] -= (fabs(pi) + fabs(pres[j])) * fv * dx[d];
     if (PHASES && rel == PAIR_OTHER) continue;
-    const double pi_ij = -dvdx / (r2 + eta2);   /* u_ji . r_ji / (r^2 + 0.01 h^2), r_ji = -dx */
-    for (int d = 0; d < dim; d++) s.visc[d] += pi_ij * fv * dx[d];
+    if (visc) {
+      const double pi_ij = -dvdx / (r2 + eta2);   /* u_ji . r_ji / (r^2 + 0.01 h^2), r_ji = -dx */
+      for (int d = 0; d < dim; d++) s.visc[d] += pi_ij * fv * dx[d];
+    }
     if (rel == PAIR_WALL) continue;
     if (DAMP == 2)
       for (int d = 0; d < dim; d++) s.damper[d] += (div[j] - div[i]) * fv * dx[d];
+    if (!diff) continue;
     double gsum = 0;
     for (int d = 0; d < dim; d++) gsum -= (gri[d] + grad_rho[d][j]) * dx[d];
     s.diff -= (2.0 * (rho_d[j] - rho_d[i]) - gsum) * fv;
@@ -122,7 +129,8 @@ static inline __attribute__((always_inline)) void fluid_sums(const struct engine
   *pairs += n_pairs;
 }
 
-#define FLUID_SUMS(D, U, A, P) fluid_sums(e, ci, nb, s, pairs, D, U, A, P)
+#define FLUID_SUMS(D, U, A, P) \
+  (diss ? fluid_sums(e, ci, nb, s, pairs, D, U, A, P, 1) : fluid_sums(e, ci, nb, s, pairs, D, U, A, P, 0))
 #define DAMPED(D, U, P) (damp == 0 ? FLUID_SUMS(D, U, 0, P) : damp == 1 ? FLUID_SUMS(D, U, 1, P) : FLUID_SUMS(D, U, 2, P))
 #ifdef MPSPH_SINGLE_PHASE   /* benchmark build: the multiphase specialisations compiled out */
 #define PHASED(D, U) DAMPED(D, U, 0)
@@ -138,6 +146,7 @@ static void dispatch(const struct engine *e, const struct centre *ci, const stru
   int phases = e->c->n_phases == 1 ? 0 : (f & FEAT_SHARPNESS) ? 2 : 1;
   int damp = !(f & FEAT_DAMPER) ? 0 : e->c->damper_form == DAMPER_SYMMETRIC ? 1 : 2;
   if (!e->c->phases[ci->phase].incompressible) damp = 0;
+  int diss = (f & FEAT_DIFFUSION) && (f & FEAT_VISCOSITY);
   (void)phases;
   if (e->p.dim == 2) du ? PHASED(2, 1) : PHASED(2, 0);
   else du ? PHASED(3, 1) : PHASED(3, 0);

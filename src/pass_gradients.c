@@ -1,5 +1,6 @@
 /* pass_gradients.c — the first pair pass of every stage:
- *  - renormalised density gradient (paper 000 Eq. 7, Randles & Libersky), same phase only:
+ *  - with density diffusion, the renormalised density gradient (paper 000 Eq. 7, Randles &
+ *    Libersky), same phase only:
  *    <grad rho>_i = L_i sum_j (rho_j - rho_i) grad_i W_ij V_j, L_i = [sum_j r_ji (x) grad_i W_ij V_j]^-1;
  *    a near-singular matrix falls back to L = I;
  *  - velocity divergence over all neighbours: <div u>_i = sum_j u_ji . grad_i W_ij V_j;
@@ -10,13 +11,15 @@
 
 #define RENORM_MIN_DET 0.1   /* det of the matrix below which L falls back to the identity */
 
-/* Sums of particle i; inlined with literal dim, shift and multi (several phases) so that the
- * loops specialise. The arrays are read through restrict pointers and the sums kept in locals.
- * Returns 1 if the renormalisation fell back to the identity. */
+/* Sums of particle i; inlined with literal dim, shift, multi (several phases) and renorm (the
+ * density gradient, read only by the density diffusion) so that the loops specialise. The arrays
+ * are read through restrict pointers and the sums kept in locals. Returns 1 if the
+ * renormalisation fell back to the identity. */
 static inline __attribute__((always_inline)) int gradients_of(struct engine *e, long i,
                                                               const struct neighbours *nb,
                                                               long *pairs, const int dim,
-                                                              const int shift, const int multi) {
+                                                              const int shift, const int multi,
+                                                              const int renorm) {
   const struct parts *p = &e->p;
   const double *restrict x[3] = {p->x[0], p->x[1], p->x[2]}, *restrict v[3] = {p->v[0], p->v[1], p->v[2]};
   const double *restrict vol = e->w.vol, *restrict rho = diffused_density(e);
@@ -43,7 +46,7 @@ static inline __attribute__((always_inline)) int gradients_of(struct engine *e, 
     n_nb++;
     if (shift)
       for (int d = 0; d < dim; d++) sum_gw[d] += fv * dx[d];
-    if (multi ? phase[j] != ph : phase[j] == PHASE_WALL) continue;
+    if (!renorm || (multi ? phase[j] != ph : phase[j] == PHASE_WALL)) continue;
     double drho = rho[j] - rhoi;
     for (int a = 0; a < dim; a++) {
       g[a] += drho * fv * dx[a];
@@ -51,9 +54,12 @@ static inline __attribute__((always_inline)) int gradients_of(struct engine *e, 
     }
   }
   *pairs += n_nb;
-  double det = linalg_solve(dim, mt, g, out);
-  int fallback = !(fabs(det) >= RENORM_MIN_DET);
-  for (int d = 0; d < dim; d++) e->w.grad_rho[d][i] = fallback ? g[d] : out[d];
+  int fallback = 0;
+  if (renorm) {
+    double det = linalg_solve(dim, mt, g, out);
+    fallback = !(fabs(det) >= RENORM_MIN_DET);
+    for (int d = 0; d < dim; d++) e->w.grad_rho[d][i] = fallback ? g[d] : out[d];
+  }
   e->w.div[i] = div;
   if (shift) shifting_velocity(e, i, sum_gw, n_nb);
   return fallback;
@@ -68,23 +74,26 @@ void pass_volumes(struct engine *e) {
 static void clear_ghost(struct engine *e, long i, const struct neighbours *nb) {
   (void)nb;
   for (int d = 0; d < e->p.dim; d++) {
-    e->w.grad_rho[d][i] = 0;
+    if (e->w.grad_rho[d]) e->w.grad_rho[d][i] = 0;
     if (e->w.du[d]) e->w.du[d][i] = 0;
   }
   e->w.div[i] = 0;
 }
 
-#define GRADIENTS_OF(D, S, M) gradients_of(e, i, nb, pairs, D, S, M)
+#define GRADIENTS_OF(D, S, M) \
+  (renorm ? gradients_of(e, i, nb, pairs, D, S, M, 1) : gradients_of(e, i, nb, pairs, D, S, M, 0))
 #ifdef MPSPH_SINGLE_PHASE   /* benchmark build: the multiphase specialisations compiled out */
 #define PHASED(D, S) GRADIENTS_OF(D, S, 0)
 #else
 #define PHASED(D, S) (multi ? GRADIENTS_OF(D, S, 1) : GRADIENTS_OF(D, S, 0))
 #endif
 
-/* The specialisation of gradients_of for the dimension, shifting and the number of phases. */
+/* The specialisation of gradients_of for the dimension, shifting, the number of phases and the
+ * density gradient. */
 static void gradients(struct engine *e, long i, const struct neighbours *nb) {
   long *pairs = &e->pass_pairs;
   int shift = (e->features & FEAT_SHIFT) != 0, multi = e->c->n_phases > 1, fallback;
+  const int renorm = (e->features & FEAT_DIFFUSION) != 0;
   (void)multi;
   if (e->p.dim == 2) fallback = shift ? PHASED(2, 1) : PHASED(2, 0);
   else fallback = shift ? PHASED(3, 1) : PHASED(3, 0);

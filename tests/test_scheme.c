@@ -5,7 +5,10 @@
  *     particle whose same-phase support is complete;
  *  2. with random velocities and densities, shifting (delta-u terms), viscosity and the interface
  *     sharpness force on, the total momentum change sum_i m_i du_i/dt vanishes to round-off
- *     (every pair term is antisymmetric; tensile control and the damper, which are not, are off).
+ *     (every pair term is antisymmetric; tensile control and the damper, which are not, are off);
+ *  3. with delta = 0 and alpha = 0 the density diffusion, the renormalised gradient and the
+ *     viscosity leave the pipeline, and the right-hand sides without them equal, value for value,
+ *     those of the full evaluation with zero coefficients (what is skipped is only what is zero).
  * Usage: test_scheme [TMPDIR] */
 #include <math.h>
 #include <stdlib.h>
@@ -98,6 +101,43 @@ static void check_momentum(struct engine *e) {
           sum[d], sum[2 + d]);
 }
 
+/* Copy (save) or compare (!save) drho/dt and du/dt of the owned fluid with buf (3 per particle);
+ * returns the count of values that differ. */
+static long rhs_values(struct engine *e, double *buf, int save) {
+  const struct parts *p = &e->p;
+  long differ = 0;
+  for (long i = 0; i < p->n_owned; i++) {
+    if (p->phase[i] == PHASE_WALL) continue;
+    const double now[3] = {e->w.drho[i], e->w.dv[0][i], e->w.dv[1][i]};
+    for (int k = 0; k < 3; k++) {
+      if (save) buf[3 * i + k] = now[k];
+      else differ += buf[3 * i + k] != now[k];
+    }
+  }
+  return differ;
+}
+
+/* Check 3: delta and alpha set to zero; the skipped terms against the full evaluation. */
+static void check_terms_off(struct engine *e, struct case_def *c) {
+  c->delta = 0;
+  c->alpha = 0;
+  engine_assemble(e);
+  int gradient_op = 0;
+  for (int k = 0; k < e->n_ops; k++) gradient_op |= strstr(e->ops[k].name, "density gradient") != NULL;
+  CHECK(!(e->features & (FEAT_DIFFUSION | FEAT_VISCOSITY)) && !gradient_op,
+        "delta = alpha = 0: diffusion, viscosity and the density gradient are out of the pipeline");
+  double *buf = malloc(3 * sizeof(double) * (e->p.n_owned + 1));
+  e->stage = 0;
+  engine_evaluate(e, 0);
+  rhs_values(e, buf, 1);
+  e->features |= FEAT_DIFFUSION | FEAT_VISCOSITY;   /* the full loops, with zero coefficients */
+  engine_evaluate(e, 0);
+  long differ = rhs_values(e, buf, 0);
+  MPI_Allreduce(MPI_IN_PLACE, &differ, 1, MPI_LONG, MPI_SUM, e->comm);
+  CHECK(differ == 0, "terms skipped vs evaluated with zero coefficients: %ld values differ", differ);
+  free(buf);
+}
+
 int main(int argc, char **argv) {
   MPI_Init(&argc, &argv);
   char dir[256] = "/tmp/mpsph-test-scheme-XXXXXX";
@@ -113,5 +153,6 @@ int main(int argc, char **argv) {
     if (!noisy) check_gradient(&e);
     else check_momentum(&e);
   }
+  check_terms_off(&e, &c);
   return engine_test_finish(&e, dir, "test_scheme");
 }
