@@ -201,6 +201,53 @@ def volume_drift(run, dx, phase):
     return np.max(np.abs(v / v[0] - 1)), volume_drift_text(st), {"t": st["time"], "v": v / v[0] - 1}
 
 
+def air_regions(s, dx, air=1):
+    """The connected regions of the air particles of snapshot data s: air particles on one cell of
+    a dx grid, cells joined through their 8 neighbours. Returns a list of (particle indices into s,
+    volume sum m/rho [m^3]) sorted by volume, largest (the open air) first."""
+    sel = np.nonzero(s["phase"] == air)[0]
+    cell = np.floor(s["position"][sel, :2] / dx).astype(np.int64)
+    cells = {}
+    for k, c in enumerate(map(tuple, cell)):
+        cells.setdefault(c, []).append(sel[k])
+    label, regions = {}, []
+    for start in cells:
+        if start in label:
+            continue
+        label[start], stack, members = len(regions), [start], []
+        while stack:
+            cx, cy = stack.pop()
+            members += cells[(cx, cy)]
+            for nb in ((cx + a, cy + b) for a in (-1, 0, 1) for b in (-1, 0, 1)):
+                if nb in cells and nb not in label:
+                    label[nb] = len(regions)
+                    stack.append(nb)
+        idx = np.array(members)
+        regions.append((idx, float(np.sum(s["mass"][idx] / s["density"][idx]))))
+    return sorted(regions, key=lambda r: -r[1])
+
+
+def dambreak_air_series(run, dx, h=0.6, min_pocket=10):
+    """Per snapshot of a two-phase dam break (water phase 0, air phase 1): time [s]; the mean gauge
+    pressure of the open air (its largest region, less the case's background) in units of
+    rho_w g H; the count of enclosed air pockets (regions of at least min_pocket particles besides
+    the open air) and of stray air particles (smaller regions); the largest pocket's volume [m^3]
+    and mean pressure [Pa]. Returns a dict of arrays."""
+    out = {k: [] for k in ("t", "open_air_p", "pockets", "stray", "pocket_volume", "pocket_p")}
+    p_b = background_pressure(run)
+    for path in snapshots(run):
+        t, s = read_snapshot(path)
+        regions = air_regions(s, dx)
+        pockets = [r for r in regions[1:] if len(r[0]) >= min_pocket]
+        out["t"].append(t)
+        out["open_air_p"].append((np.mean(s["pressure"][regions[0][0]]) - p_b) / (1000.0 * G * h))
+        out["pockets"].append(len(pockets))
+        out["stray"].append(sum(len(r[0]) for r in regions[1:] if len(r[0]) < min_pocket))
+        out["pocket_volume"].append(pockets[0][1] if pockets else 0.0)
+        out["pocket_p"].append(float(np.mean(s["pressure"][pockets[0][0]]) - p_b) if pockets else float("nan"))
+    return {k: np.array(v) for k, v in out.items()}
+
+
 # --- Rayleigh-Taylor (He, Chen and Zhang 1999 set-up) ----------------------------------------
 
 def rt_linear_rate(atwood, g, k, nu):
