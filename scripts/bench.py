@@ -127,6 +127,8 @@ def derive(rows, case):
     d["bytes_per_particle_end"] = sum(ends) / (fluid + wall)
     d["rss_peak_max_rank"] = max(peaks)
     d["rss_end_sum"] = sum(ends)
+    pss = [num(r["value"]) for r in rows if r["name"].startswith("pss_end_rank")]
+    d["bytes_per_particle_pss"] = sum(pss) / (fluid + wall)
     files = [num(r["value"]) for r in rows if r["name"].startswith("rss_file_end_rank")]
     own = [num(r["value"]) for r in rows if r["name"].startswith("project_bytes_rank")]
     d["bytes_per_particle_file"] = sum(files) / (fluid + wall)

@@ -9,6 +9,9 @@
 #include "init.h"
 #include "partition.h"
 #include "redistribute.h"
+#ifdef __GLIBC__
+#include <malloc.h>
+#endif
 #include "signal_stop.h"
 #include "wall_guard.h"
 
@@ -85,6 +88,9 @@ int engine_repartition(struct engine *e) {
   resort(e);
   e->n_repartitions++;
   e->last_repartition_step = e->step;
+#ifdef __GLIBC__
+  malloc_trim(0);   /* hand the redistribution's freed message buffers back to the system */
+#endif
   return 0;
 }
 

@@ -36,6 +36,19 @@ static double current_file_rss_bytes(void) {
   return kb * 1024.0;
 }
 
+/* Proportional resident memory of this process [bytes]: each shared page divided by the number
+ * of processes that map it (Pss of /proc/self/smaps_rollup; 0 where it is missing). Summed over
+ * the ranks it is the memory the job holds, with the library pages counted once. */
+static double current_pss_bytes(void) {
+  char line[256];
+  double kb = 0;
+  FILE *f = fopen("/proc/self/smaps_rollup", "r");
+  while (f && fgets(line, sizeof line, f))
+    if (sscanf(line, "Pss: %lf kB", &kb) == 1) break;
+  if (f) fclose(f);
+  return kb * 1024.0;
+}
+
 void engine_global_counts(const struct engine *e, double *n_fluid, double *n_wall) {
   double local[2] = {0, 0}, total[2];
   for (long i = 0; i < e->p.n_owned; i++) local[e->p.phase[i] == PHASE_WALL]++;
@@ -61,7 +74,7 @@ static void project_bytes(struct engine *e, double *bytes) {
   bytes[MEM_HALO] = (double)halo_bytes(&e->halo);
 }
 
-#define PER_RANK 4   /* memory figures gathered from each rank */
+#define PER_RANK 5   /* memory figures gathered from each rank: peak, end, file-backed, project, PSS */
 
 /* Everything the summary reports, reduced over the ranks (memory gathered to rank 0). */
 struct run_summary {
@@ -83,7 +96,7 @@ static void max_mean(const struct engine *e, double x, double *max, double *mean
 }
 
 static void summarise(struct engine *e, long steps, double loop_seconds, struct run_summary *s) {
-  double rss[PER_RANK] = {peak_rss_bytes(), current_rss_bytes(), current_file_rss_bytes(), 0}, *all = NULL, mem[N_MEM];
+  double rss[PER_RANK] = {peak_rss_bytes(), current_rss_bytes(), current_file_rss_bytes(), 0, current_pss_bytes()}, *all = NULL, mem[N_MEM];
   project_bytes(e, mem);
   for (int k = 0; k < N_MEM; k++) rss[3] += mem[k];
   MPI_Reduce(mem, s->mem_sum, N_MEM, MPI_DOUBLE, MPI_SUM, 0, e->comm);
@@ -130,6 +143,7 @@ static void write_rows(FILE *f, const void *ctx) {
     const double *m = s->per_rank + PER_RANK * r;
     fprintf(f, "rss_peak_rank%d,memory,%.0f,,,\nrss_end_rank%d,memory,%.0f,,,\n", r, m[0], r, m[1]);
     fprintf(f, "rss_file_end_rank%d,memory,%.0f,,,\nproject_bytes_rank%d,memory,%.0f,,,\n", r, m[2], r, m[3]);
+    fprintf(f, "pss_end_rank%d,memory,%.0f,,,\n", r, m[4]);
   }
   for (int k = 0; k < N_MEM; k++) fprintf(f, "bytes_%s,memory,%.0f,,,\n", mem_names[k], s->mem_sum[k]);
 }
@@ -142,11 +156,12 @@ static void write_timings(const struct engine *e, const struct run_summary *s) {
 
 static void print_summary(const struct engine *e, const struct run_summary *s) {
   double rate = s->steps > 0 && s->loop_seconds > 0 ? s->n_fluid * (double)s->steps / s->loop_seconds : 0;
-  double rss_max = 0, rss_sum = 0, own = 0, n = s->n_fluid + s->n_wall;
+  double rss_max = 0, rss_sum = 0, pss_sum = 0, own = 0, n = s->n_fluid + s->n_wall;
   for (int r = 0; r < e->n_ranks; r++) {
     const double *m = s->per_rank + PER_RANK * r;
     rss_max = rss_max > m[0] ? rss_max : m[0];
     rss_sum += m[0];
+    pss_sum += m[4];
     own += m[3];
   }
   printf("summary: %ld steps in %.2f s on %d ranks; %.0f fluid + %.0f wall particles\n", s->steps,
@@ -157,6 +172,9 @@ static void print_summary(const struct engine *e, const struct run_summary *s) {
   printf("  %6.2f s  output\n", e->t_output);
   printf("  peak memory: %.1f MB on the largest rank, %.0f bytes per particle (all ranks)\n",
          rss_max / 1e6, rss_sum / n);
+  if (pss_sum > 0)
+    printf("  memory at the end: %.0f bytes per particle (all ranks, shared pages counted once)\n",
+           pss_sum / n);
   printf("  project arrays: %.0f bytes per particle (all ranks):", own / n);
   for (int k = 0; k < N_MEM; k++) printf(" %s %.0f", mem_names[k], s->mem_sum[k] / n);
   printf("\n");
