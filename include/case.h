@@ -50,12 +50,24 @@ struct phase {
   double density_band[2];   /* [min, max] of rho/rho0; leaving it stops the run as unstable [-] */
 };
 
+/** A potential-flow mode of a horizontal interface at y = interface (2D): added to the initial
+ *  velocity, u = amplitude e^(-k|y - interface|) (sgn(y - interface) sin kx, cos kx), k = 2 pi /
+ *  wavelength: the linear eigenmode of a small interface perturbation, started from a flat
+ *  interface (Rayleigh-Taylor growth, gravity waves). */
+struct velocity_mode {
+  int active;
+  double amplitude;          /* vertical velocity of the interface at x = 0 [m/s] */
+  double wavelength;         /* [m] */
+  double interface;          /* height y of the interface [m] */
+};
+
 /** A region filled with particles of one phase on the initial lattice. */
 struct fluid_region {
   int phase;                 /* index into case.phases */
   struct shape shape;
   double velocity[3];        /* initial velocity [m/s] */
   double velocity_gradient[3][3];   /* u = velocity + G x: G[a][b] = du_a/dx_b [1/s] */
+  struct velocity_mode mode; /* added to the initial velocity when active */
 };
 
 /** A wall: layers of fixed ghost particles along the boundary of a shape. */

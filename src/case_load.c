@@ -50,7 +50,8 @@ static const char *const CIRCLE_KEYS[] = {"centre", "radius", "inner_radius", NU
 static const char *const PHASE_KEYS[] = {"name", "rho0", "c0", "gamma", "p_background",
                                          "viscosity", "incompressible", "density_band", NULL};
 static const char *const FLUID_KEYS[] = {"phase", "box", "circle", "polygon", "velocity",
-                                         "velocity_gradient", NULL};
+                                         "velocity_gradient", "velocity_mode", NULL};
+static const char *const MODE_KEYS[] = {"amplitude", "wavelength", "interface", NULL};
 static const char *const POTENTIAL_KEYS[] = {"omega", "centre", NULL};
 static const char *const WALL_KEYS[] = {"box", "circle", "polygon", "slip", "fluid_side", "motion", NULL};
 static const char *const MOTION_KEYS[] = {"translation", "rotation", "table", "centre", NULL};
@@ -536,10 +537,27 @@ static int shape_inside(const struct map *m, const struct shape *s, const struct
   return inside(m, SHAPE_NAMES[s->kind], lo, hi, c);
 }
 
+/* The interface mode {amplitude: m/s, wavelength: m, interface: y [m]} of a region (2D only);
+ * inactive when the key is absent. */
+static int read_velocity_mode(const struct map *fluid, struct velocity_mode *mode) {
+  char path[PATH_LEN];
+  struct map m;
+  if (sub(fluid, "velocity_mode", MODE_KEYS, &m)) return 1;
+  mode->active = m.node != NULL;
+  if (!mode->active) return 0;
+  if (fluid->ld->dim != 2)
+    return fail(fluid->ld, get(fluid, "velocity_mode", path), path,
+                "got velocity_mode in 3D (the interface mode is 2D only)");
+  return num(&m, "amplitude", &R_ANY, REQUIRED, &mode->amplitude) ||
+         num(&m, "wavelength", &R_POSITIVE, REQUIRED, &mode->wavelength) ||
+         num(&m, "interface", &R_ANY, REQUIRED, &mode->interface);
+}
+
 static int read_fluid(const struct map *m, struct case_def *c, int i) {
   struct fluid_region *f = &c->fluids[i];
   return phase_index(m, c, &f->phase) || shape(m, &f->shape) || shape_inside(m, &f->shape, c) ||
-         vec(m, "velocity", 0, f->velocity) || matrix(m, "velocity_gradient", f->velocity_gradient);
+         vec(m, "velocity", 0, f->velocity) || matrix(m, "velocity_gradient", f->velocity_gradient) ||
+         read_velocity_mode(m, &f->mode);
 }
 
 /* The ramp of a motion law: {shape: none | linear | smooth, time: seconds}. */
@@ -984,6 +1002,15 @@ static void put_vec(FILE *f, const char *indent, const char *key, const double *
   fputc('\n', f);
 }
 
+/* A fluid region's interface mode, when it has one. */
+static void put_velocity_mode(FILE *f, const struct velocity_mode *mode) {
+  if (!mode->active) return;
+  fputs("    velocity_mode:\n", f);
+  put_num(f, "      ", "amplitude", mode->amplitude);
+  put_num(f, "      ", "wavelength", mode->wavelength);
+  put_num(f, "      ", "interface", mode->interface);
+}
+
 /* The code point of the UTF-8 sequence at s and its length in *n; a malformed sequence reads as
  * the one byte U+FFFD. */
 static unsigned long utf8_at(const unsigned char *s, int *n) {
@@ -1142,6 +1169,7 @@ static void put_bodies(FILE *f, const struct case_def *c) {
       put_flow_vec(f, c->fluids[i].velocity_gradient[a], c->dimension);
     }
     fputs("]\n", f);
+    put_velocity_mode(f, &c->fluids[i].mode);
   }
   put_list_key(f, "walls", c->n_walls);
   for (int i = 0; i < c->n_walls; i++) {

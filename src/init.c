@@ -33,12 +33,22 @@ static int region_at(const struct case_def *c, const double *x) {
   return -1;
 }
 
-/* Initial velocity of region k at x: velocity + G x. */
+/* Add the interface mode's velocity at x (2D): V e^(-k|y - y0|) (sgn(y - y0) sin kx, cos kx). */
+static void add_velocity_mode(const struct velocity_mode *mode, const double *x, double *u) {
+  if (!mode->active) return;
+  double k = 2 * acos(-1.0) / mode->wavelength, dy = x[1] - mode->interface;
+  double decay = mode->amplitude * exp(-k * fabs(dy));
+  u[0] += (dy > 0 ? 1 : dy < 0 ? -1 : 0) * decay * sin(k * x[0]);
+  u[1] += decay * cos(k * x[0]);
+}
+
+/* Initial velocity of region k at x: velocity + G x, plus the region's interface mode. */
 static void region_velocity(const struct case_def *c, int k, const double *x, double *u) {
   for (int a = 0; a < c->dimension; a++) {
     u[a] = c->fluids[k].velocity[a];
     for (int b = 0; b < c->dimension; b++) u[a] += c->fluids[k].velocity_gradient[a][b] * x[b];
   }
+  add_velocity_mode(&c->fluids[k].mode, x, u);
 }
 
 /* Acceleration the pressure must balance at x in region k: body force minus the convective

@@ -7,6 +7,7 @@
 
 #include "case_load.h"
 #include "init.h"
+#include "parts.h"
 #include "check.h"
 
 #define ERR_LEN 1024
@@ -299,6 +300,8 @@ static void same_lists(const struct case_def *a, const struct case_def *b) {
     CHECK(a->fluids[i].phase == b->fluids[i].phase, "fluid %d phase", i);
     same_shape(&a->fluids[i].shape, &b->fluids[i].shape, "fluid shape");
     same_vec(a->fluids[i].velocity, b->fluids[i].velocity, 3, "fluid velocity");
+    CHECK(memcmp(&a->fluids[i].mode, &b->fluids[i].mode, sizeof(a->fluids[i].mode)) == 0,
+          "fluid %d velocity_mode", i);
   }
   for (int i = 0; i < a->n_walls; i++) {
     same_shape(&a->walls[i].shape, &b->walls[i].shape, "wall shape");
@@ -407,6 +410,53 @@ static void test_lattice_origin(void) {
                "case.yaml:3: resolution.origin: got a list of 1 item", "one per dimension");
 }
 
+/* fluids.N.velocity_mode: the interface mode's velocity on the lattice (both sides of a flat
+ * interface at y0 = 0.5: the normal velocity continuous across it, the tangential one reversed,
+ * the value V e^(-k|y - y0|) cos kx on each particle), its echo and its errors. */
+static void test_velocity_mode(void) {
+  const char *mode = "{amplitude: 0.02, wavelength: 0.5, interface: 0.5}";
+  char text[1024];
+  snprintf(text, sizeof text, "name: rt\ndimension: 2\nresolution: {dx: 0.05, origin: [0, 0]}\n"
+           "time: {end: 1.0}\ndomain: {min: [-0.1, -0.1], max: [1.1, 1.1]}\n"
+           "phases: [{name: heavy, rho0: 3, c0: 6}, {name: light, rho0: 1, c0: 6}]\n"
+           "fluids: [{phase: heavy, box: {min: [0, 0.5], max: [1, 1]}, velocity_mode: %s},\n"
+           "         {phase: light, box: {min: [0, 0], max: [1, 0.5]}, velocity_mode: %s}]\n", mode, mode);
+  struct case_def c;
+  struct parts p;
+  struct init_counts n;
+  char msg[256];
+  CHECK(load(text, 0, NULL, &c) == 0 && c.fluids[1].mode.active, "loads: %s", err);
+  parts_init(&p, 2, 16, 0);
+  CHECK(init_particles(&c, 0.1, 0, 1, &p, &n, msg, sizeof msg) == 0 && p.n_owned == 400, "init: %s", msg);
+  double k = 4 * acos(-1.0), worst = 0, jump_n = 0, jump_t = 0;
+  for (long i = 0; i < p.n_owned; i++) {
+    double x = p.x[0][i], dy = p.x[1][i] - 0.5, decay = 0.02 * exp(-k * fabs(dy));
+    worst = fmax(worst, fabs(p.v[1][i] - decay * cos(k * x)));
+    worst = fmax(worst, fabs(p.v[0][i] - (dy > 0 ? decay : -decay) * sin(k * x)));
+    for (long j = 0; j < p.n_owned; j++)   /* the mirror particle across the interface */
+      if (p.x[0][j] == x && fabs(p.x[1][j] - 0.5 + dy) < 1e-12) {
+        jump_n = fmax(jump_n, fabs(p.v[1][j] - p.v[1][i]));
+        jump_t = fmax(jump_t, fabs(p.v[0][j] + p.v[0][i]));
+      }
+  }
+  CHECK(worst < 1e-15, "mode velocity off by %g m/s", worst);
+  CHECK(jump_n < 1e-15 && jump_t < 1e-15, "mirror pairs: normal jump %g, tangential asymmetry %g",
+        jump_n, jump_t);
+  parts_free(&p);
+  round_trip(text);
+  expect_error(variant(10, "  - {phase: water, box: {min: [0, 0], max: [1, 0.5]}, "
+                       "velocity_mode: {amplitude: 0.1, wavelength: 0, interface: 0.5}}"), 0, NULL,
+               "case.yaml:10: fluids.0.velocity_mode.wavelength: got '0'", "a number > 0");
+  expect_error(variant(10, "  - {phase: water, box: {min: [0, 0], max: [1, 0.5]}, "
+                       "velocity_mode: {amplitude: 0.1, wavelength: 1}}"), 0, NULL,
+               "fluids.0.velocity_mode.interface: missing required key", "a number");
+  expect_error("name: t\ndimension: 3\nresolution: {dx: 0.1}\ntime: {end: 1}\n"
+               "domain: {min: [0, 0, 0], max: [1, 1, 1]}\nphases: [{name: w, rho0: 1, c0: 1}]\n"
+               "fluids: [{phase: w, box: {min: [0, 0, 0], max: [1, 1, 1]}, "
+               "velocity_mode: {amplitude: 1, wavelength: 1, interface: 0.5}}]\n", 0, NULL,
+               "case.yaml:7: fluids.0.velocity_mode: got velocity_mode in 3D", "2D only");
+}
+
 /* Wall motion: the laws, their defaults, the round trip and the required keys. */
 static void test_motion(void) {
   const char *moving = "walls:\n  - box: {min: [0, 0], max: [1, 1]}\n    motion:\n"
@@ -512,6 +562,7 @@ int main(void) {
   test_probe_kinds();
   test_motion_table();
   test_lattice_origin();
+  test_velocity_mode();
   unlink(path);
   rmdir(dir);
   return check_report("test_case_load");

@@ -52,15 +52,21 @@ def impact(ax, items):
 
 
 def rt_growth(ax, items):
-    """Mode amplitude a(t)/a0 against cosh(sigma_nu t)."""
+    """Mode amplitude a(t) of each run with its fit, and the linear theory's growth from the finest
+    run's initial rate, a'(0) sinh(sigma_nu t) / sigma_nu."""
     for r, c in items:
-        ax.plot(c["t"], c["a"] / c["a"][0], "o-", ms=3, label=_label(r))
+        line = ax.plot(c["t"], c["a"], "o", ms=3, label=_label(r))[0]
+        t = np.linspace(0, c["t_fit"], 100)
+        ax.plot(t, c["fit"][0] * np.sinh(c["sigma"] * t) + c["fit"][1] * np.cosh(c["sigma"] * t), "-",
+                lw=0.8, color=line.get_color())
     if items:
         c = items[-1][1]
+        rate0 = c["fit"][0] * c["sigma"]
         t = np.linspace(0, c["t"].max(), 100)
-        ax.plot(t, np.cosh(c["sigma_nu"] * t), "k-", lw=0.8, label="cosh(sigma_nu t), linear theory")
+        ax.plot(t, rate0 * np.sinh(c["sigma_nu"] * t) / c["sigma_nu"], "k--", lw=0.8,
+                label="exact viscous rate %.3f 1/s, from the fit's initial rate" % c["sigma_nu"])
     ax.set_xlabel("t [s]")
-    ax.set_ylabel("a / a0")
+    ax.set_ylabel("mode amplitude a [m]")
 
 
 def rt_tips(ax, items):
