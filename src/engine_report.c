@@ -1,6 +1,7 @@
 /* engine_report.c — the end-of-run summary: throughput, time per operation, memory; printed, and
  * written to OUTDIR/timings.csv for the benchmark driver (scripts/bench.py). */
 #include <stdlib.h>
+#include <string.h>
 #include <sys/resource.h>
 #include <unistd.h>
 #include "engine.h"
@@ -23,31 +24,27 @@ static double current_rss_bytes(void) {
   return (double)pages_resident * (double)sysconf(_SC_PAGESIZE);
 }
 
-/* File-backed resident memory of this process [bytes]: the pages of the executable and the shared
- * libraries (MPI, HDF5, ...), which every rank maps (RssFile of /proc/self/status; 0 where it is
- * missing). */
-static double current_file_rss_bytes(void) {
+/* The number [kB] after `key` ("RssFile:", "Pss:") in a /proc file of this process, in bytes;
+ * 0 where the file or the line is missing. */
+static double proc_kb_line(const char *file, const char *key) {
   char line[256];
+  size_t n = strlen(key);
   double kb = 0;
-  FILE *f = fopen("/proc/self/status", "r");
+  FILE *f = fopen(file, "r");
   while (f && fgets(line, sizeof line, f))
-    if (sscanf(line, "RssFile: %lf kB", &kb) == 1) break;
+    if (strncmp(line, key, n) == 0 && sscanf(line + n, "%lf", &kb) == 1) break;
   if (f) fclose(f);
   return kb * 1024.0;
 }
 
+/* File-backed resident memory of this process [bytes]: the pages of the executable and the shared
+ * libraries (MPI, HDF5, ...), which every rank maps. */
+static double current_file_rss_bytes(void) { return proc_kb_line("/proc/self/status", "RssFile:"); }
+
 /* Proportional resident memory of this process [bytes]: each shared page divided by the number
- * of processes that map it (Pss of /proc/self/smaps_rollup; 0 where it is missing). Summed over
- * the ranks it is the memory the job holds, with the library pages counted once. */
-static double current_pss_bytes(void) {
-  char line[256];
-  double kb = 0;
-  FILE *f = fopen("/proc/self/smaps_rollup", "r");
-  while (f && fgets(line, sizeof line, f))
-    if (sscanf(line, "Pss: %lf kB", &kb) == 1) break;
-  if (f) fclose(f);
-  return kb * 1024.0;
-}
+ * of processes that map it. Summed over the ranks it is the memory the job holds, with the
+ * library pages counted once. */
+static double current_pss_bytes(void) { return proc_kb_line("/proc/self/smaps_rollup", "Pss:"); }
 
 void engine_global_counts(const struct engine *e, double *n_fluid, double *n_wall) {
   double local[2] = {0, 0}, total[2];
