@@ -200,7 +200,12 @@ static int due(double time, double interval, double *next, int force) {
 int engine_output(struct engine *e, int force) {
   const struct case_def *c = e->c;
   double snap_interval = c->output_interval > 0 ? c->output_interval : INFINITY;
-  if (due(e->time, snap_interval, &e->next_output, force) && e->last_snapshot_step != e->step) {
+  int snapshot = due(e->time, snap_interval, &e->next_output, force) && e->last_snapshot_step != e->step;
+  int probes = c->n_probes && due(e->time, c->probes_interval, &e->next_probes, force) &&
+               e->last_probes_step != e->step;
+  if ((snapshot || probes) && (e->features & FEAT_SHEPARD) && e->step > 0)
+    engine_ghosts_now(e);   /* delta-sph: write the Shepard pressure its forces use */
+  if (snapshot) {
     e->last_snapshot_step = e->step;
     if (write_snapshot(e)) return 3;
   }
@@ -208,8 +213,7 @@ int engine_output(struct engine *e, int force) {
     e->last_stats_step = e->step;
     write_stats(e);
   }
-  if (c->n_probes && due(e->time, c->probes_interval, &e->next_probes, force) &&
-      e->last_probes_step != e->step) {
+  if (probes) {
     e->last_probes_step = e->step;
     probes_write_row(e, e->probes);
   }
