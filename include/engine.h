@@ -242,7 +242,8 @@ void engine_evaluate(struct engine *e, int skip_state_halo);
 
 /** Wall ghost values (pressure, velocity, density, mass) from the current fluid state, outside
  *  the timed stage pipeline: for the outputs at the start of a run, before any stage has set
- *  them. Collective. */
+ *  them; with delta-sph also the Shepard density and pressure first (what the next stage
+ *  recomputes), for every snapshot and probe row. Collective. */
 void engine_ghosts_now(struct engine *e);
 
 /** Assemble the pipeline of passes and halo updates the case needs; allocate its arrays. On a

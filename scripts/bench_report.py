@@ -271,7 +271,6 @@ class Report:
                "start-up included, is %.0f B per particle." % worst_peak, "")
         if where and worst > TARGET_BYTES:
             case, ranks, runs = where
-            n = runs[0]["fluid"] + runs[0]["wall"]
             own = med(col(runs, "bytes_per_particle_project"))
             self.w("Missed by %.0f B (%s, %d rank%s: %.0f B): the project's arrays are %.0f B of it, the "
                    "rest is the processes' fixed cost and the libraries' heaps." % (

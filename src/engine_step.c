@@ -292,25 +292,21 @@ void engine_evaluate(struct engine *e, int skip_state_halo) {
     if (!e->ops[k].once_per_step || e->stage <= 0) engine_run_op(e, k);
 }
 
-/* delta-sph: the Shepard density and pressure of the current state, the pressure the next stage
- * will use (its first operations, run here outside a stage). */
-static void shepard_now(struct engine *e) {
-  double *fields[32];
-  halo_update(&e->halo, &e->p, fields, halo_field_list(e, HF_POS | HF_VEL | HF_RHO | HF_P, fields));
-  pass_volumes(e);
-  pass_neighbour_lists(e);
-  pass_shepard_density(e);
-  halo_update(&e->halo, &e->p, fields, halo_field_list(e, HF_RHO_SHEPARD | HF_P, fields));
-  e->pass_pairs = 0;
-}
-
 void engine_ghosts_now(struct engine *e) {
-  if (e->features & FEAT_SHEPARD) shepard_now(e);
-  if (!(e->features & FEAT_WALLS)) return;
+  int shepard = (e->features & FEAT_SHEPARD) != 0, walls = (e->features & FEAT_WALLS) != 0;
+  if (!shepard && !walls) return;
   double *fields[32];
   halo_update(&e->halo, &e->p, fields, halo_field_list(e, HF_POS | HF_VEL | HF_RHO | HF_P, fields));
-  pass_wall_ghosts(e);
-  halo_update(&e->halo, &e->p, fields, halo_field_list(e, HF_VEL | HF_RHO | HF_P | HF_MASS, fields));
+  if (shepard) {   /* delta-sph: the stage's first operations, which set the pressure */
+    pass_volumes(e);
+    pass_neighbour_lists(e);
+    pass_shepard_density(e);
+    halo_update(&e->halo, &e->p, fields, halo_field_list(e, HF_RHO_SHEPARD | HF_P, fields));
+  }
+  if (walls) {
+    pass_wall_ghosts(e);
+    halo_update(&e->halo, &e->p, fields, halo_field_list(e, HF_VEL | HF_RHO | HF_P | HF_MASS, fields));
+  }
   e->pass_pairs = 0;
 }
 

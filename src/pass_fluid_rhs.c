@@ -40,8 +40,9 @@ static inline double other_phase_pressure(double pi, double rhoi, double pj, dou
  * 2 difference form), PHASES (0: one fluid phase, so no pair is of the other-phase relation;
  * 1: several phases; 2: several phases with the sharpness force) and the dimension are
  * compile-time constants in each specialisation; so is DISS (bit 1: viscosity, bit 2: density
- * diffusion; a term that is off has its pair terms compiled out). The sums are accumulated in locals and the arrays read through restrict
- * pointers, so that nothing goes through memory inside the loop. */
+ * diffusion; a term that is off has its pair terms compiled out). The sums are accumulated in
+ * locals and the arrays read through restrict pointers, so that nothing goes through memory
+ * inside the loop. */
 static inline __attribute__((always_inline)) void fluid_sums(const struct engine *e,
                                                              const struct centre *ci,
                                                              const struct neighbours *nb,

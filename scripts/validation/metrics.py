@@ -280,7 +280,7 @@ def rt_mode_matrix(n, k, g, rho, nu):
 def rt_viscous_rate(k, g, rho, nu):
     """Exact linear growth rate [1/s] of the Rayleigh-Taylor mode k of two viscous fluids (heavy
     rho[1] above light rho[0]): the real root n of det rt_mode_matrix(n) = 0, by Newton's method
-    from the estimate rt_linear_rate. Checked in tests/test_rt_dispersion.py against the inviscid
+    from the estimate rt_linear_rate. Checked in tests/check_rt_dispersion.py against the inviscid
     sqrt(At g k), the viscous limit At g / (2 nu k) and Lamb's gravity-wave damping 2 nu k^2."""
     atwood = (rho[1] - rho[0]) / (rho[1] + rho[0])
     n = complex(rt_linear_rate(atwood, g, k, 0.5 * (nu[0] + nu[1])))
