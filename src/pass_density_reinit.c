@@ -1,14 +1,17 @@
 /* pass_density_reinit.c — density re-initialisation of scheme riemann, once per advection step
  * (paper 002 Eqs. 10-11, notes seed-002 section 1.5, single resolution):
  * (light: a gas phase, i.e. not `incompressible`, lighter than another phase; heavy: every other)
- *   heavy phase i (free-surface type, the light phases ignored):
- *     rho_sum = rho0_i (W(0) + sum_{j heavy or wall} W_ij) / sigma0,
+ *   heavy phase i (free-surface type, every other phase ignored: i's own phase and the walls):
+ *     rho_sum = rho0_i (W(0) + sum_{j of i's phase or wall} W_ij) / sigma0,
  *     rho_i   = rho_sum + max(0, rho*_i - rho_sum) rho0_i / rho*_i,
  *   light phase i (internal-flow type, every neighbour counted):
  *     rho_i   = rho0_i (W(0) + sum_j W_ij) / sigma0,
  * rho* the density from the continuity equation, sigma0 the same sum on the undisturbed lattice
  * (self term included), and p from the phase's EOS. A neighbour counts as one lattice site: the
- * phases and the wall ghosts share the spacing dx (notes A12 with V0_j = V0_i). */
+ * phases and the wall ghosts share the spacing dx (notes A12 with V0_j = V0_i). With one heavy phase
+ * this is the paper's Eq. 10; with several (liquid-liquid) each one's interface with another liquid
+ * is treated as its interface with the light phase is, so the rows of two liquids placed on offset
+ * lattices do not read as compression (doc/theory.md section 10). */
 #include <math.h>
 #include "eos.h"
 #include "passes.h"
@@ -41,7 +44,7 @@ static void reinit_of(struct engine *e, long i, const struct neighbours *nb) {
   long n = 0;
   struct neighbours it = *nb;
   for (long j; neighbours_next(&it, &j);) {
-    if (!light && p->phase[j] != PHASE_WALL && riemann_light_phase(e->c, p->phase[j])) continue;
+    if (!light && p->phase[j] != PHASE_WALL && p->phase[j] != ph) continue;
     double dx[3], r2 = pair_separation(p, p->dim, i, j, dx);
     if (r2 >= e->kern.support2) continue;
     sum += kernel_w(&e->kern, r2);

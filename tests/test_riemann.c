@@ -20,7 +20,11 @@
  *     is 0.25 h / u_max for U << u_max and the cell-skin limit B / U for U >> u_max (B = 0.75 of
  *     the allowed motion), 2B / (U + sqrt(U^2 + 2 a B)) with a transport acceleration a; one
  *     advection step takes ceil(dt_ad / dt_ac) acoustic sub-steps, dt_ac = cfl h / (c0 + U), and
- *     moves every particle by U dt_ad.
+ *     moves every particle by U dt_ad;
+ *  7. two liquids (both `incompressible`, neither a light phase) on lattices offset by (dx/2, dx/2),
+ *     so that the rows at their interface lie 0.71 dx apart, at rho0 and rest: the re-initialisation
+ *     gives rho0 to round-off for every particle (each liquid's Eq. 10 sum counts its own phase
+ *     only; counting the other liquid's crowded rows gave 1.28 rho0 at the interface).
  * Usage: test_riemann */
 #include <math.h>
 #include <stdio.h>
@@ -81,6 +85,25 @@ static const char *wall_case =
     "  - {phase: water, box: {min: [0, 0], max: [1, 1]}}\n"
     "walls:\n"
     "  - {box: {min: [0, 0], max: [1, 1]}, slip: no}\n"
+    "physics: {u_max: 2}\n"
+    "initial: {pressure: zero}\n"
+    "output: {progress_interval: 1000}\n";
+
+/* Test 7: two liquids whose lattices are offset by (dx/2, dx/2) (anchors at their boxes' corners). */
+static const char *liquids_case =
+    "name: riemann-liquids-test\n"
+    "dimension: 2\n"
+    "scheme: riemann\n"
+    "kernel: wendland-c2\n"
+    "resolution: {dx: 0.02, h_over_dx: 1.3}\n"
+    "time: {end: 1.0, cfl: 0.6}\n"
+    "domain: {min: [-0.1, -0.1], max: [1.1, 1.1]}\n"
+    "phases:\n"
+    "  - {name: heavy, rho0: 1, c0: 15, gamma: 7, incompressible: true}\n"
+    "  - {name: lighter, rho0: 0.01, c0: 150, gamma: 7, incompressible: true}\n"
+    "fluids:\n"
+    "  - {phase: heavy, box: {min: [0, 0], max: [1, 0.495]}}\n"
+    "  - {phase: lighter, box: {min: [0.01, 0.49], max: [1.01, 1]}}\n"
     "physics: {u_max: 2}\n"
     "initial: {pressure: zero}\n"
     "output: {progress_interval: 1000}\n";
@@ -150,6 +173,21 @@ static void check_reinit(struct engine *e) {
   MPI_Allreduce(MPI_IN_PLACE, err, 2, MPI_DOUBLE, MPI_MAX, e->comm);
   if (e->rank == 0) printf("re-initialised density error: heavy %.3g (all), light %.3g (complete supports)\n", err[0], err[1]);
   CHECK(err[0] <= 1e-13 && err[1] <= 1e-13, "re-initialisation on the lattice: %g %g", err[0], err[1]);
+}
+
+/* Test 7: the re-initialised density of every particle of two liquids at rest at rho0 whose
+ * interface rows are crowded (0.71 dx apart) is rho0. */
+static void check_liquid_reinit(struct engine *e) {
+  set_and_rebuild(e, 0);
+  run_pass(e, "density re-initialisation");
+  double err = 0;
+  for (long i = 0; i < e->p.n_owned; i++) {
+    double rho0 = e->c->phases[e->p.phase[i]].rho0;
+    err = fmax(err, fabs(e->p.rho[i] - rho0) / rho0);
+  }
+  MPI_Allreduce(MPI_IN_PLACE, &err, 1, MPI_DOUBLE, MPI_MAX, e->comm);
+  if (e->rank == 0) printf("two liquids, crowded interface: re-initialised density error %.3g\n", err);
+  CHECK(err <= 1e-13, "re-initialisation at a crowded liquid-liquid interface: %g", err);
 }
 
 /* The plain symmetric pressure term and the expected continuity of owned particle i by brute force
@@ -263,12 +301,12 @@ int main(int argc, char **argv) {
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   if (rank == 0) check_solver();
   char dir[256] = "/tmp/mpsph-test-riemann-XXXXXX", dir1[256] = "/tmp/mpsph-test-riemann1-XXXXXX";
-  char dir2[256] = "/tmp/mpsph-test-riemann2-XXXXXX";
+  char dir2[256] = "/tmp/mpsph-test-riemann2-XXXXXX", dir3[256] = "/tmp/mpsph-test-riemann3-XXXXXX";
   if (engine_test_scratch(dir, sizeof dir) || engine_test_scratch(dir1, sizeof dir1) ||
-      engine_test_scratch(dir2, sizeof dir2))
+      engine_test_scratch(dir2, sizeof dir2) || engine_test_scratch(dir3, sizeof dir3))
     return 1;
-  static struct case_def c, c1, c2;
-  struct engine e, e1, e2;
+  static struct case_def c, c1, c2, c3;
+  struct engine e, e1, e2, e3;
   if (engine_test_start(dir, two_phase_case, &c, &e)) return check_report("test_riemann");
   CHECK((e.features & FEAT_RIEMANN) && (e.features & FEAT_TRANSPORT_VELOCITY) && !(e.features & (FEAT_SHIFT | FEAT_DAMPER | FEAT_TIC)),
         "riemann pipeline: its own terms only, transport velocity with a light phase");
@@ -281,13 +319,18 @@ int main(int argc, char **argv) {
   check_walls(&e2);
   engine_close_output(&e2);
   engine_free(&e2);
+  if (engine_test_start(dir3, liquids_case, &c3, &e3)) return check_report("test_riemann");
+  CHECK(!(e3.features & FEAT_TRANSPORT_VELOCITY), "two liquids: no light phase, no transport velocity");
+  check_liquid_reinit(&e3);
+  engine_close_output(&e3);
+  engine_free(&e3);
   if (engine_test_start(dir1, one_phase_case, &c1, &e1)) return check_report("test_riemann");
   CHECK(!(e1.features & FEAT_TRANSPORT_VELOCITY), "one phase: no transport velocity");
   check_stepper(&e1);
   if (rank == 0) {
-    char cmd[600];
-    snprintf(cmd, sizeof cmd, "rm -rf '%s' '%s'", dir, dir2);
-    if (system(cmd)) printf("could not remove %s, %s\n", dir, dir2);
+    char cmd[900];
+    snprintf(cmd, sizeof cmd, "rm -rf '%s' '%s' '%s'", dir, dir2, dir3);
+    if (system(cmd)) printf("could not remove %s, %s, %s\n", dir, dir2, dir3);
   }
   return engine_test_finish(&e1, dir1, "test_riemann");
 }
