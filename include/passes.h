@@ -36,10 +36,12 @@ void pass_neighbour_lists(struct engine *e);
 void pass_volumes(struct engine *e);
 
 /** Shepard sums at one point: {sum W V, and sum W V times p, rho, u[3]} over every fluid phase
- *  (all) and over each phase on its own (phase[k]). */
-enum { SHEPARD_W, SHEPARD_P, SHEPARD_RHO, SHEPARD_U, SHEPARD_SUMS = SHEPARD_U + 3 };
+ *  (all) and over each phase on its own (phase[k]); per phase also sum W V rho r[3] when
+ *  with_rho_r (the density-weighted interface pressure's ghosts need it). */
+enum { SHEPARD_W, SHEPARD_P, SHEPARD_RHO, SHEPARD_U, SHEPARD_RHO_R = SHEPARD_U + 3, SHEPARD_SUMS = SHEPARD_RHO_R + 3 };
 struct shepard {
   double all[SHEPARD_SUMS], phase[CASE_MAX_PHASES][SHEPARD_SUMS];
+  int with_rho_r;
 };
 
 /** Called for each slot j within the kernel support of a point, with wv = W V_j [-]. */

@@ -1,8 +1,12 @@
 /* pass_wall_ghosts.c — values of the ghost particles (Marrone et al. 2011, CMAME 200), fixed in
- * their wall's frame: Shepard interpolation of pressure and velocity at the ghost's mirror point
- * r* (over the phase with the largest Shepard weight there with the density-weighted interface
- * pressure, over every phase otherwise), p_k = p* + rho* (g - a_w).(r_k - r*), u_k = u* with its normal component relative to the
- * wall mirrored (free slip) or 2 u_w - u* (no slip); u_w, a_w = 0 for a fixed wall. */
+ * their wall's frame: Shepard interpolation at the ghost's mirror point r* of velocity and
+ * pressure, u_k = u* with its normal component relative to the wall mirrored (free slip) or
+ * 2 u_w - u* (no slip), u_w and a_w = 0 for a fixed wall, and
+ *  - with the paper's pair sum, over every phase: p_k = p* + rho* (g - a_w).(r_k - r*);
+ *  - with the density-weighted interface pressure, over the phase with the largest Shepard weight
+ *    at r* only, each neighbour's pressure carried to the ghost along its own hydrostatic and
+ *    inertial gradient (Adami, Hu & Adams 2012, JCP 231:7057, Eq. 27):
+ *    p_k = sum_j [p_j + rho_j (g - a_w).(r_k - r_j)] W V_j / sum_j W V_j. */
 #include <math.h>
 #include <string.h>
 #include "passes.h"
@@ -36,12 +40,15 @@ static void add_values(double *a, const struct parts *p, long j, double wv) {
 /* Add fluid slot j with weight wv to the Shepard sums ctx: all phases and its own. */
 static void add_shepard(void *ctx, const struct engine *e, long j, double wv) {
   struct shepard *s = ctx;
+  double *own = s->phase[e->p.phase[j]];
   add_values(s->all, &e->p, j, wv);
-  add_values(s->phase[e->p.phase[j]], &e->p, j, wv);
+  add_values(own, &e->p, j, wv);
+  for (int d = 0; s->with_rho_r && d < e->p.dim; d++) own[SHEPARD_RHO_R + d] += wv * e->p.rho[j] * e->p.x[d][j];
 }
 
 void shepard_at(const struct engine *e, const double *xs, struct shepard *s, long *pairs) {
   memset(s, 0, sizeof(*s));
+  s->with_rho_r = e->c->interface_pressure == IFACE_P_DENSITY_WEIGHTED;
   *pairs += visit_near(e, xs, 0, add_shepard, s);
 }
 
@@ -61,12 +68,26 @@ static void wall_kinematics(const struct engine *e, int w, const double *x, doub
   frame_acceleration(&e->frames[w], dim, x, a);
 }
 
+/* Pressure [Pa] of ghost k at r_k from the Shepard sums src at its mirror point xs, with the
+ * hydrostatic and inertial correction for the body acceleration g - a_w (acc): from the mirror
+ * point with the mean density (mixed phases), or from each neighbour with its own density (one
+ * phase: exact for a hydrostatic field whatever part of the support is filled). */
+static double ghost_pressure(const struct engine *e, const double *r_k, const double *xs, const double *src,
+                             const double *acc, int per_neighbour) {
+  double pressure = src[SHEPARD_P] / src[SHEPARD_W], rho_star = src[SHEPARD_RHO] / src[SHEPARD_W];
+  for (int d = 0; d < e->p.dim; d++)
+    pressure += per_neighbour ? acc[d] * (r_k[d] * rho_star - src[SHEPARD_RHO_R + d] / src[SHEPARD_W])
+                              : rho_star * acc[d] * (r_k[d] - xs[d]);
+  return pressure;
+}
+
 /* Set ghost k from the Shepard sums at its mirror point xs: pressure with the hydrostatic and
  * inertial correction, velocity mirrored relative to the wall's. */
 static void ghost_from_shepard(struct engine *e, long k, const double *xs, const struct shepard *s) {
   struct parts *p = &e->p;
   int dim = p->dim, w = p->wall[k];
   double u[3] = {0, 0, 0}, n[3], nn = 0, un = 0, pressure = 0, mid[3] = {0, 0, 0}, uw[3], aw[3];
+  double r_k[3] = {0, 0, 0}, acc[3] = {0, 0, 0};
   for (int d = 0; d < dim; d++) mid[d] = 0.5 * (xs[d] + p->x[d][k]);
   wall_kinematics(e, w, mid, uw, aw);
   /* the sums the ghost takes its values from: with the density-weighted interface pressure its
@@ -74,14 +95,15 @@ static void ghost_from_shepard(struct engine *e, long k, const double *xs, const
    * pair sum every phase's (Marrone et al. 2011: a ghost beside a water particle in air carries
    * part of its pressure) */
   int ph = majority_phase(e, s);
-  const double *src = e->c->interface_pressure == IFACE_P_DENSITY_WEIGHTED ? s->phase[ph] : s->all;
+  int one_phase = e->c->interface_pressure == IFACE_P_DENSITY_WEIGHTED;
+  const double *src = one_phase ? s->phase[ph] : s->all;
   if (src[SHEPARD_W] > 0) {
-    double rho_star = src[SHEPARD_RHO] / src[SHEPARD_W];
-    pressure = src[SHEPARD_P] / src[SHEPARD_W];
     for (int d = 0; d < dim; d++) {
       u[d] = src[SHEPARD_U + d] / src[SHEPARD_W];
-      pressure += rho_star * (e->c->gravity[d] - aw[d]) * (p->x[d][k] - xs[d]);
+      r_k[d] = p->x[d][k];
+      acc[d] = e->c->gravity[d] - aw[d];
     }
+    pressure = ghost_pressure(e, r_k, xs, src, acc, one_phase);
   }
   for (int d = 0; d < dim; d++) {
     n[d] = xs[d] - p->x[d][k];
