@@ -2,9 +2,10 @@
  * Eqs. 23-27; doc/theory.md section "Same-phase continuity"):
  *   drho_i/dt = -rho_i sum_{j in chi_i} (u_j - u_i).gW_ij + delta h c0_i sum_j psi*_ij.gW_ij
  *   du_i/dt   = -(1/rho_i) sum_j (p_i + p*_j) gW_ij + (2(d+2)/rho_i) sum_j mu_ij pi_ij gW_ij + f_i
- * with gW_ij = grad_i W_ij V_j, chi_i the fluid of i's phase and the wall ghosts, the other sums
- * over every neighbour; psi*_ij.gW_ij = 2 (rho*_j - rho_i) r_ji.gW_ij / r^2; for a neighbour of
- * another phase p*_j is its Shepard pressure p~_j (Eq. 26) and rho*_j the density of i's phase at
+ * with gW_ij = grad_i W_ij V_j, chi_i the fluid of i's phase, of every phase with a larger rho0
+ * (a deviation from Eq. 23: a lighter phase reads a heavier one's velocities, doc/theory.md section
+ * 11) and the wall ghosts, the other sums over every neighbour;
+ * psi*_ij.gW_ij = 2 (rho*_j - rho_i) r_ji.gW_ij / r^2; for a neighbour of another phase p*_j is its Shepard pressure p~_j (Eq. 26) and rho*_j the density of i's phase at
  * p*_j (Eq. 27, the inverse EOS of i's phase); for a ghost p*_j = p_j and rho*_j likewise (Eq. 38);
  * for i's own phase p*_j = p_j, rho*_j = rho_j. pi_ij = u_ji.r_ji/(r^2 + 0.01 h^2) and mu_ij is the
  * harmonic mean of the phases' mu = alpha h c0 rho0 / (2(d+2)) + viscosity (Eqs. 21-22).
@@ -86,7 +87,11 @@ static void spc_sums(const struct engine *e, long i, const struct neighbours *nb
   const struct phase *fi = &e->c->phases[ph];
   const double pi = pres[i], rhoi = rho[i], eta2 = 0.01 * e->h * e->h, support2 = e->kern.support2;
   double mu[CASE_MAX_PHASES];
-  for (int k = 0; k < e->c->n_phases; k++) mu[k] = phase_mu(e, k);
+  int heavier[CASE_MAX_PHASES];   /* phases whose velocities i's divergence reads besides its own */
+  for (int k = 0; k < e->c->n_phases; k++) {
+    mu[k] = phase_mu(e, k);
+    heavier[k] = e->c->phases[k].rho0 > fi->rho0;
+  }
   *s = (struct spc_sums){0};
   struct neighbours it = *nb;
   for (long j; neighbours_next(&it, &j);) {
@@ -100,7 +105,7 @@ static void spc_sums(const struct engine *e, long i, const struct neighbours *nb
     const double rho_star = same ? rho[j] : eos_density(fi, p_star);
     const double mu_ij = harmonic_mean(mu[ph], wall ? mu[ph] : mu[p->phase[j]]);
     const double pi_ij = -dvdx / (r2 + eta2);   /* u_ji.r_ji / (r^2 + 0.01 h^2) */
-    if (same || wall || conventional) s->div += dvdx * fv;
+    if (same || wall || conventional || heavier[p->phase[j]]) s->div += dvdx * fv;
     if (wall && gas) spc_wall_repulsion(e, i, j, s->repulsion);
     s->diff -= 2.0 * (rho_star - rhoi) * fv;    /* psi*_ij.gW_ij: r_ji.r_ij / r^2 = -1 */
     for (int d = 0; d < dim; d++) {
