@@ -61,8 +61,9 @@ void wall_mirror_point(const struct engine *e, long k, double *xs);
 
 /** Wall ghosts: Shepard interpolation of p, u, rho at the mirror point (over every phase, or
  *  with the density-weighted interface pressure over the phase with the largest Shepard weight
- *  there), hydrostatic pressure correction and free-/no-slip velocity (Marrone et al. 2011).
- *  Owned ghosts only. */
+ *  there), hydrostatic and inertial pressure correction (from the mirror point, or with the
+ *  density-weighted interface pressure and several phases from each neighbour with its own
+ *  density) and free-/no-slip velocity (Marrone et al. 2011). Owned ghosts only. */
 void pass_wall_ghosts(struct engine *e);
 
 /** Scheme delta-sph, per stage: the same-phase Shepard density of the owned fluid (paper 001

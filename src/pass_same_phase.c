@@ -5,7 +5,8 @@
  * with gW_ij = grad_i W_ij V_j, chi_i the fluid of i's phase, of every phase with a larger rho0
  * (a deviation from Eq. 23: a lighter phase reads a heavier one's velocities, doc/theory.md section
  * 11) and the wall ghosts, the other sums over every neighbour;
- * psi*_ij.gW_ij = 2 (rho*_j - rho_i) r_ji.gW_ij / r^2; for a neighbour of another phase p*_j is its Shepard pressure p~_j (Eq. 26) and rho*_j the density of i's phase at
+ * psi*_ij.gW_ij = 2 (rho*_j - rho_i) r_ji.gW_ij / r^2; for a neighbour of another phase p*_j is
+ * its Shepard pressure p~_j (Eq. 26) and rho*_j the density of i's phase at
  * p*_j (Eq. 27, the inverse EOS of i's phase); for a ghost p*_j = p_j and rho*_j likewise (Eq. 38);
  * for i's own phase p*_j = p_j, rho*_j = rho_j. pi_ij = u_ji.r_ji/(r^2 + 0.01 h^2) and mu_ij is the
  * harmonic mean of the phases' mu = alpha h c0 rho0 / (2(d+2)) + viscosity (Eqs. 21-22).
@@ -105,7 +106,7 @@ static void spc_sums(const struct engine *e, long i, const struct neighbours *nb
     const double rho_star = same ? rho[j] : eos_density(fi, p_star);
     const double mu_ij = harmonic_mean(mu[ph], wall ? mu[ph] : mu[p->phase[j]]);
     const double pi_ij = -dvdx / (r2 + eta2);   /* u_ji.r_ji / (r^2 + 0.01 h^2) */
-    if (same || wall || conventional || heavier[p->phase[j]]) s->div += dvdx * fv;
+    if (same || wall || conventional || (!wall && heavier[p->phase[j]])) s->div += dvdx * fv;
     if (wall && gas) spc_wall_repulsion(e, i, j, s->repulsion);
     s->diff -= 2.0 * (rho_star - rhoi) * fv;    /* psi*_ij.gW_ij: r_ji.r_ij / r^2 = -1 */
     for (int d = 0; d < dim; d++) {

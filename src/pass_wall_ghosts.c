@@ -3,9 +3,9 @@
  * pressure, u_k = u* with its normal component relative to the wall mirrored (free slip) or
  * 2 u_w - u* (no slip), u_w and a_w = 0 for a fixed wall, and
  *  - with the paper's pair sum, over every phase: p_k = p* + rho* (g - a_w).(r_k - r*);
- *  - with the density-weighted interface pressure, over the phase with the largest Shepard weight
- *    at r* only, each neighbour's pressure carried to the ghost along its own hydrostatic and
- *    inertial gradient (Adami, Hu & Adams 2012, JCP 231:7057, Eq. 27):
+ *  - with the density-weighted interface pressure and several phases, over the phase with the
+ *    largest Shepard weight at r* only, each neighbour's pressure carried to the ghost along its
+ *    own hydrostatic and inertial gradient (Adami, Hu & Adams 2012, JCP 231:7057, Eq. 27):
  *    p_k = sum_j [p_j + rho_j (g - a_w).(r_k - r_j)] W V_j / sum_j W V_j. */
 #include <math.h>
 #include <string.h>
@@ -48,7 +48,7 @@ static void add_shepard(void *ctx, const struct engine *e, long j, double wv) {
 
 void shepard_at(const struct engine *e, const double *xs, struct shepard *s, long *pairs) {
   memset(s, 0, sizeof(*s));
-  s->with_rho_r = e->c->interface_pressure == IFACE_P_DENSITY_WEIGHTED;
+  s->with_rho_r = e->c->interface_pressure == IFACE_P_DENSITY_WEIGHTED && e->c->n_phases > 1;
   *pairs += visit_near(e, xs, 0, add_shepard, s);
 }
 
@@ -103,7 +103,7 @@ static void ghost_from_shepard(struct engine *e, long k, const double *xs, const
       r_k[d] = p->x[d][k];
       acc[d] = e->c->gravity[d] - aw[d];
     }
-    pressure = ghost_pressure(e, r_k, xs, src, acc, one_phase);
+    pressure = ghost_pressure(e, r_k, xs, src, acc, s->with_rho_r);
   }
   for (int d = 0; d < dim; d++) {
     n[d] = xs[d] - p->x[d][k];
