@@ -44,6 +44,15 @@ static inline int engine_test_start(const char *dir, const char *case_text, stru
   return check_failures != 0;
 }
 
+/** engine_test_scratch, then engine_test_start in that folder: returns 0, or 1 after a failed
+ *  check (a folder that could not be made counts as one). Collective. */
+static inline int engine_test_open(char *dir, int len, const char *case_text, struct case_def *c,
+                                   struct engine *e) {
+  int no_folder = engine_test_scratch(dir, len);
+  CHECK(!no_folder, "scratch folder %s", dir);
+  return no_folder || engine_test_start(dir, case_text, c, e);
+}
+
 /** A deterministic pseudo-random number in [-0.5, 0.5) from a particle id and a salt, so that
  *  a field made from it is the same on any number of ranks. */
 static inline double engine_test_noise(int64_t id, int salt) {

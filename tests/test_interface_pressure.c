@@ -83,10 +83,9 @@ int main(int argc, char **argv) {
   int rank;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   char dir[256] = "/tmp/mpsph-test-iface-XXXXXX";
-  if (engine_test_scratch(dir, sizeof dir)) return 1;
   static struct case_def c;
   struct engine e;
-  if (engine_test_start(dir, case_text, &c, &e)) return check_report("test_interface_pressure");
+  if (engine_test_open(dir, sizeof dir, case_text, &c, &e)) return check_report("test_interface_pressure");
   double dx = c.dx;
   evaluate(&e, &c, IFACE_P_SUM);
   double a_sum = max_acceleration(&e, 1, dx);

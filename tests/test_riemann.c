@@ -37,23 +37,22 @@
 #include "passes.h"
 #include "riemann.h"
 
-static const char *two_phase_case =
-    "name: riemann-test\n"
-    "dimension: 2\n"
-    "scheme: riemann\n"
-    "kernel: wendland-c2\n"
-    "resolution: {dx: 0.02, h_over_dx: 1.3}\n"
-    "time: {end: 1.0, cfl: 0.6}\n"
+/* The scheme, kernel, resolution, time and domain of the cases in the unit box at dx = 0.02, and
+ * the keys that end every case here. */
+#define UNIT_BOX_HEAD "dimension: 2\nscheme: riemann\nkernel: wendland-c2\n" \
+    "resolution: {dx: 0.02, h_over_dx: 1.3}\ntime: {end: 1.0, cfl: 0.6}\n"      \
     "domain: {min: [-0.1, -0.1], max: [1.1, 1.1]}\n"
+#define CASE_TAIL "physics: {u_max: 2}\ninitial: {pressure: zero}\noutput: {progress_interval: 1000}\n"
+
+static const char *two_phase_case =
+    "name: riemann-test\n" UNIT_BOX_HEAD
     "phases:\n"
     "  - {name: water, rho0: 1000, c0: 20, gamma: 1, incompressible: true}\n"
     "  - {name: light, rho0: 1, c0: 20, gamma: 1, density_band: [0.5, 2000]}\n"
     "fluids:\n"
     "  - {phase: water, box: {min: [0, 0], max: [1, 0.5]}}\n"
     "  - {phase: light, box: {min: [0, 0.5], max: [1, 1]}}\n"
-    "physics: {u_max: 2}\n"
-    "initial: {pressure: zero}\n"
-    "output: {progress_interval: 1000}\n";
+    CASE_TAIL;
 
 static const char *one_phase_case =
     "name: riemann-step-test\n"
@@ -67,9 +66,7 @@ static const char *one_phase_case =
     "  - {name: water, rho0: 1000, c0: 200, gamma: 1, incompressible: true}\n"
     "fluids:\n"
     "  - {phase: water, box: {min: [0, 0], max: [1, 1]}}\n"
-    "physics: {u_max: 2}\n"
-    "initial: {pressure: zero}\n"
-    "output: {progress_interval: 1000}\n";
+    CASE_TAIL;
 
 static const char *wall_case =
     "name: riemann-wall-test\n"
@@ -85,28 +82,18 @@ static const char *wall_case =
     "  - {phase: water, box: {min: [0, 0], max: [1, 1]}}\n"
     "walls:\n"
     "  - {box: {min: [0, 0], max: [1, 1]}, slip: no}\n"
-    "physics: {u_max: 2}\n"
-    "initial: {pressure: zero}\n"
-    "output: {progress_interval: 1000}\n";
+    CASE_TAIL;
 
 /* Test 7: two liquids whose lattices are offset by (dx/2, dx/2) (anchors at their boxes' corners). */
 static const char *liquids_case =
-    "name: riemann-liquids-test\n"
-    "dimension: 2\n"
-    "scheme: riemann\n"
-    "kernel: wendland-c2\n"
-    "resolution: {dx: 0.02, h_over_dx: 1.3}\n"
-    "time: {end: 1.0, cfl: 0.6}\n"
-    "domain: {min: [-0.1, -0.1], max: [1.1, 1.1]}\n"
+    "name: riemann-liquids-test\n" UNIT_BOX_HEAD
     "phases:\n"
     "  - {name: heavy, rho0: 1, c0: 15, gamma: 7, incompressible: true}\n"
     "  - {name: lighter, rho0: 0.01, c0: 150, gamma: 7, incompressible: true}\n"
     "fluids:\n"
     "  - {phase: heavy, box: {min: [0, 0], max: [1, 0.495]}}\n"
     "  - {phase: lighter, box: {min: [0.01, 0.49], max: [1.01, 1]}}\n"
-    "physics: {u_max: 2}\n"
-    "initial: {pressure: zero}\n"
-    "output: {progress_interval: 1000}\n";
+    CASE_TAIL;
 
 static void check_solver(void) {
   double zl = 1000 * 20, zr = 1 * 20, pl = 300, pr = 100;

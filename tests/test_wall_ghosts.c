@@ -25,12 +25,8 @@
 #define Y_LID 1.0
 
 static const char *case_text =
-    "name: wall-ghosts-test\n"
-    "dimension: 2\n"
-    "resolution: {dx: 0.02}\n"
-    "gravity: [0, -9.81]\n"
-    "time: {end: 1.0}\n"
-    "domain: {min: [-0.1, -0.1], max: [1.1, 1.1]}\n"
+    "name: wall-ghosts-test\ndimension: 2\nresolution: {dx: 0.02}\ngravity: [0, -9.81]\ntime: {end: 1.0}\n"
+    "domain: {min: [-0.1, -0.1], max: [1.1, 1.1]}   # room for the four ghost layers\n"
     "phases:\n"
     "  - {name: water, rho0: 1000, c0: 100, incompressible: true}\n"
     "  - {name: air, rho0: 1, c0: 340, gamma: 1.4}\n"
@@ -68,20 +64,17 @@ static void worst_ghosts(const struct engine *e, double *worst, long *n) {
 
 int main(int argc, char **argv) {
   MPI_Init(&argc, &argv);
-  int rank;
-  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   char dir[256] = "/tmp/mpsph-test-ghosts-XXXXXX";
-  if (engine_test_scratch(dir, sizeof dir)) return 1;
   static struct case_def c;
   struct engine e;
-  if (engine_test_start(dir, case_text, &c, &e)) return check_report("test_wall_ghosts");
+  if (engine_test_open(dir, sizeof dir, case_text, &c, &e)) return check_report("test_wall_ghosts");
   CHECK(engine_rebuild(&e) == 0, "rebuild");
   e.stage = 0;
   engine_evaluate(&e, 0);
   long n[2];
   double worst[2];
   worst_ghosts(&e, worst, n);
-  if (rank == 0)
+  if (e.rank == 0)
     printf("density-weighted: %ld water and %ld air ghosts, largest deviation from their phase's "
            "hydrostatic line: water %.3g, air %.3g of rho g Hw\n", n[0], n[1], worst[0], worst[1]);
   CHECK(n[0] > 0 && n[1] > 0, "ghosts of both phases: water %ld, air %ld", n[0], n[1]);
