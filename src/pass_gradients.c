@@ -3,7 +3,10 @@
  *    Libersky), same phase only:
  *    <grad rho>_i = L_i sum_j (rho_j - rho_i) grad_i W_ij V_j, L_i = [sum_j r_ji (x) grad_i W_ij V_j]^-1;
  *    a near-singular matrix falls back to L = I;
- *  - velocity divergence over all neighbours: <div u>_i = sum_j u_ji . grad_i W_ij V_j;
+ *  - velocity divergence over all neighbours: <div u>_i = sum_j w_ij u_ji . grad_i W_ij V_j, w_ij = 1
+ *    except with the density-weighted interface pressure for j of another phase,
+ *    w_ij = 2 rho_j / (rho_i + rho_j), the continuity that matches its pair pressure 2 p_ij in the
+ *    energy balance (doc/theory.md section 3);
  *  - with shifting, sum_j grad_i W_ij V_j over all neighbours, turned into du (shifting.c). */
 #include <math.h>
 #include "linalg.h"
@@ -25,7 +28,8 @@ static inline __attribute__((always_inline)) int gradients_of(struct engine *e, 
   const double *restrict vol = e->w.vol, *restrict rho = diffused_density(e);
   const int *restrict phase = p->phase;
   const int ph = phase[i];
-  const double support2 = e->kern.support2, rhoi = rho[i];
+  const double support2 = e->kern.support2, rhoi = rho[i], *restrict rho_state = p->rho;
+  const int weighted = multi && e->c->interface_pressure == IFACE_P_DENSITY_WEIGHTED;
   double xi[3], vi[3], mt[9] = {0}, g[3] = {0}, sum_gw[3] = {0}, div = 0, out[3];
   for (int d = 0; d < dim; d++) {
     xi[d] = x[d][i];
@@ -42,7 +46,10 @@ static inline __attribute__((always_inline)) int gradients_of(struct engine *e, 
     }
     if (r2 >= support2) continue;
     double fv = kernel_f(&e->kern, r2) * vol[j];
-    div += fv * dvdx;
+    if (weighted && phase[j] != ph && phase[j] != PHASE_WALL)
+      div += fv * dvdx * 2.0 * rho_state[j] / (rho_state[i] + rho_state[j]);
+    else
+      div += fv * dvdx;
     n_nb++;
     if (shift)
       for (int d = 0; d < dim; d++) sum_gw[d] += fv * dx[d];
