@@ -6,8 +6,9 @@
 # pair sum here (its interface error is of first order in h: 6 % at this resolution, doc/theory.md
 # section 4b). The same tank with physics.interface_pressure: density-weighted (theory section 4,
 # "Interface pressure") must also hold the centreline pressure within 2 % at t = 1 s (measured
-# 1.08 % with its wall ghosts of theory section 5, 1.49 % before them; acoustic transient
-# included). Last, delta-sph with consistent shifting: its bottom pressure.
+# 1.26 % with its wall ghosts of theory section 5 and divergence weight of section 3, 1.49 %
+# before them; acoustic transient included). Last, delta-sph with consistent shifting: its bottom
+# pressure.
 set -eu
 cd "$(dirname "$0")/.."
 out=$(mktemp -d)
