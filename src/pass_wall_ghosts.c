@@ -68,16 +68,19 @@ static void wall_kinematics(const struct engine *e, int w, const double *x, doub
   frame_acceleration(&e->frames[w], dim, x, a);
 }
 
-/* Pressure [Pa] of ghost k at r_k from the Shepard sums src at its mirror point xs, with the
- * hydrostatic and inertial correction for the body acceleration g - a_w (acc): from the mirror
- * point with the mean density (mixed phases), or from each neighbour with its own density (one
- * phase: exact for a hydrostatic field whatever part of the support is filled). */
-static double ghost_pressure(const struct engine *e, const double *r_k, const double *xs, const double *src,
-                             const double *acc, int per_neighbour) {
+/* Pressure [Pa] of ghost k from the Shepard sums src at its mirror point xs, with the hydrostatic
+ * and inertial correction for the body acceleration g - a_w (aw the wall's acceleration): from the
+ * mirror point with the mean density (mixed phases), or from each neighbour with its own density
+ * (one phase: exact for a hydrostatic field whatever part of the support is filled). */
+static double ghost_pressure(const struct engine *e, long k, const double *xs, const double *src,
+                             const double *aw, int per_neighbour) {
+  const double *r_k[3] = {e->p.x[0], e->p.x[1], e->p.x[2]};
   double pressure = src[SHEPARD_P] / src[SHEPARD_W], rho_star = src[SHEPARD_RHO] / src[SHEPARD_W];
-  for (int d = 0; d < e->p.dim; d++)
-    pressure += per_neighbour ? acc[d] * (r_k[d] * rho_star - src[SHEPARD_RHO_R + d] / src[SHEPARD_W])
-                              : rho_star * acc[d] * (r_k[d] - xs[d]);
+  for (int d = 0; d < e->p.dim; d++) {
+    double acc = e->c->gravity[d] - aw[d];
+    pressure += per_neighbour ? acc * (r_k[d][k] * rho_star - src[SHEPARD_RHO_R + d] / src[SHEPARD_W])
+                              : rho_star * acc * (r_k[d][k] - xs[d]);
+  }
   return pressure;
 }
 
@@ -87,7 +90,6 @@ static void ghost_from_shepard(struct engine *e, long k, const double *xs, const
   struct parts *p = &e->p;
   int dim = p->dim, w = p->wall[k];
   double u[3] = {0, 0, 0}, n[3], nn = 0, un = 0, pressure = 0, mid[3] = {0, 0, 0}, uw[3], aw[3];
-  double r_k[3] = {0, 0, 0}, acc[3] = {0, 0, 0};
   for (int d = 0; d < dim; d++) mid[d] = 0.5 * (xs[d] + p->x[d][k]);
   wall_kinematics(e, w, mid, uw, aw);
   /* the sums the ghost takes its values from: with the density-weighted interface pressure its
@@ -95,15 +97,10 @@ static void ghost_from_shepard(struct engine *e, long k, const double *xs, const
    * pair sum every phase's (Marrone et al. 2011: a ghost beside a water particle in air carries
    * part of its pressure) */
   int ph = majority_phase(e, s);
-  int one_phase = e->c->interface_pressure == IFACE_P_DENSITY_WEIGHTED;
-  const double *src = one_phase ? s->phase[ph] : s->all;
+  const double *src = e->c->interface_pressure == IFACE_P_DENSITY_WEIGHTED ? s->phase[ph] : s->all;
   if (src[SHEPARD_W] > 0) {
-    for (int d = 0; d < dim; d++) {
-      u[d] = src[SHEPARD_U + d] / src[SHEPARD_W];
-      r_k[d] = p->x[d][k];
-      acc[d] = e->c->gravity[d] - aw[d];
-    }
-    pressure = ghost_pressure(e, r_k, xs, src, acc, s->with_rho_r);
+    for (int d = 0; d < dim; d++) u[d] = src[SHEPARD_U + d] / src[SHEPARD_W];
+    pressure = ghost_pressure(e, k, xs, src, aw, s->with_rho_r);
   }
   for (int d = 0; d < dim; d++) {
     n[d] = xs[d] - p->x[d][k];
