@@ -1,0 +1,228 @@
+#!/usr/bin/env python3
+"""Rising bubble (cases/rising-bubble-hysing): the benchmark quantities of Hysing et al. 2009.
+
+From every snapshot of RUN_DIR, over the particles of the lightest phase (the bubble), with the
+particle volume V = m / rho:
+  - y_c, the centroid height  sum V y / sum V                       [m]
+  - v_c, the mean rise velocity sum V v / sum V                       [m/s]
+  - the circularity 2 sqrt(pi A) / P of the bubble's outline: the colour of the bubble,
+    C = sum_bubble W V / sum_all W V (Gaussian kernel of the run's h, cut at 3h, over the fluid
+    particles of every phase), is sampled on a grid of spacing dx/4 and its 0.5 contour is taken
+    (contourpy, matplotlib's contouring library); P is the length of the longest closed contour
+    and A the area it encloses (shoelace), so the circle of the same area has the perimeter
+    2 sqrt(pi A).
+Printed: the minimum circularity and its time, the maximum rise velocity and its time (each
+refined by a parabola through the extreme sample and its two neighbours), y_c at the last
+snapshot (t = 3 for the case), their errors against the reference file, and the drift of the
+bubble's volume (sum V) from stats.csv. A CSV time series is written to RUN_DIR/bubble_rise.csv
+(or --csv PATH).
+
+The reference file (default cases/rising-bubble-hysing/reference/hysing2009_tc1.csv) has
+'#' comment lines, then the header quantity,value and the rows c_min, t_c_min, v_max, t_v_max,
+y_c_end. Without --tol the script only reports (exit 0); with --tol REL it fails (exit 1) when
+one of the three values c_min, v_max, y_c_end is off by more than REL (relative), or when the
+last snapshot is not at the reference end time.
+
+With a curve file (default reference/hysing2009_tc1_digitised.csv beside the reference: '#'
+comments, header series,time,value, series y_c or v_c) the run's y_c(t) and v_c(t), linear between
+snapshots, are compared at its times and the largest differences printed (for information only).
+
+Usage: check_bubble_rise.py RUN_DIR [--ref FILE] [--curves FILE] [--csv PATH] [--tol REL]
+"""
+import argparse
+import glob
+import os
+
+import contourpy
+import h5py
+import numpy as np
+import yaml
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+DEFAULT_REF = os.path.join(HERE, "..", "cases", "rising-bubble-hysing", "reference", "hysing2009_tc1.csv")
+DEFAULT_CURVES = os.path.join(os.path.dirname(DEFAULT_REF), "hysing2009_tc1_digitised.csv")
+
+
+def read_case(run):
+    """The resolved case of a run (config.yaml)."""
+    with open(os.path.join(run, "config.yaml")) as f:
+        return yaml.safe_load(f)
+
+
+def read_snapshot(path):
+    """Time and the fluid particles of a snapshot (wall ghosts dropped)."""
+    with h5py.File(path, "r") as f:
+        t = float(f["header"].attrs["time"])
+        phase = f["particles/phase"][:]
+        keep = phase >= 0
+        s = {k: f["particles/" + k][:][keep] for k in ("position", "velocity", "density", "mass")}
+    s["phase"] = phase[keep]
+    return t, s
+
+
+def colour_grid(x, vol, inside, h, spacing, lo, hi):
+    """Shepard colour of the bubble on the grid nodes lo + k spacing up to hi: X, Y, C."""
+    gx = np.arange(lo[0], hi[0] + 0.5 * spacing, spacing)
+    gy = np.arange(lo[1], hi[1] + 0.5 * spacing, spacing)
+    nx, ny = len(gx), len(gy)
+    num, den = np.zeros(nx * ny), np.zeros(nx * ny)
+    reach = int(np.ceil(3 * h / spacing))
+    # nearest grid node of each particle, then the kernel stamped at every offset of the stencil
+    ix = np.rint((x[:, 0] - lo[0]) / spacing).astype(int)
+    iy = np.rint((x[:, 1] - lo[1]) / spacing).astype(int)
+    for di in range(-reach, reach + 1):
+        for dj in range(-reach, reach + 1):
+            jx, jy = ix + di, iy + dj
+            ok = (jx >= 0) & (jx < nx) & (jy >= 0) & (jy < ny)
+            r2 = (gx[jx[ok]] - x[ok, 0]) ** 2 + (gy[jy[ok]] - x[ok, 1]) ** 2
+            w = np.where(r2 < 9 * h * h, np.exp(-r2 / (h * h)), 0.0) * vol[ok]
+            flat = jx[ok] * ny + jy[ok]
+            den += np.bincount(flat, weights=w, minlength=nx * ny)
+            num += np.bincount(flat, weights=w * inside[ok], minlength=nx * ny)
+    c = np.divide(num, den, out=np.zeros_like(num), where=den > 0).reshape(nx, ny)
+    return gx, gy, c
+
+
+def outline(gx, gy, c):
+    """Perimeter, enclosed area and count of the closed 0.5 contours; the longest one is the bubble."""
+    lines = contourpy.contour_generator(gx, gy, c.T).lines(0.5)
+    closed = [l for l in lines if len(l) > 3 and np.allclose(l[0], l[-1])]
+    if not closed:
+        return np.nan, np.nan, 0
+    longest = max(closed, key=lambda l: np.sum(np.hypot(*np.diff(l, axis=0).T)))
+    perimeter = np.sum(np.hypot(*np.diff(longest, axis=0).T))
+    px, py = longest[:, 0], longest[:, 1]
+    area = 0.5 * abs(np.dot(px[:-1], py[1:]) - np.dot(px[1:], py[:-1]))
+    return perimeter, area, len(closed)
+
+
+def bubble_row(path, bubble, h, dx, box):
+    """t, area, y_c, v_c, circularity, contour area, perimeter, number of contours."""
+    t, s = read_snapshot(path)
+    vol = s["mass"] / s["density"]
+    inside = (s["phase"] == bubble).astype(float)
+    b = s["phase"] == bubble
+    area = vol[b].sum()
+    y_c = np.dot(vol[b], s["position"][b, 1]) / area
+    v_c = np.dot(vol[b], s["velocity"][b, 1]) / area
+    # the grid covers the bubble plus 4h, clipped to the column
+    lo = np.maximum(s["position"][b].min(axis=0) - 4 * h, box[0])
+    hi = np.minimum(s["position"][b].max(axis=0) + 4 * h, box[1])
+    near = np.all((s["position"] > lo - 3 * h) & (s["position"] < hi + 3 * h), axis=1)
+    gx, gy, c = colour_grid(s["position"][near], vol[near], inside[near], h, dx / 4, lo, hi)
+    perimeter, c_area, n_lines = outline(gx, gy, c)
+    circ = 2 * np.sqrt(np.pi * c_area) / perimeter
+    return t, area, y_c, v_c, circ, c_area, perimeter, n_lines
+
+
+def extremum(t, f, kind):
+    """Extreme value of samples f(t) and its time, refined by a parabola through 3 samples."""
+    k = int(np.nanargmin(f) if kind == "min" else np.nanargmax(f))
+    if 0 < k < len(f) - 1:
+        a, b, c = np.polyfit(t[k - 1:k + 2] - t[k], f[k - 1:k + 2], 2)
+        if a != 0 and abs(b / (2 * a)) <= (t[k + 1] - t[k - 1]) / 2:
+            ts = -b / (2 * a)
+            return c - b * b / (4 * a), t[k] + ts
+    return f[k], t[k]
+
+
+def read_reference(path):
+    """quantity -> value of the reference CSV ('#' comments, header quantity,value)."""
+    ref = {}
+    with open(path) as f:
+        lines = [l.strip() for l in f if l.strip() and not l.startswith("#")]
+    for line in lines[1:]:
+        name, value = line.split(",")[:2]
+        ref[name] = float(value)
+    return ref
+
+
+def compare_curves(path, t, series):
+    """Print the largest difference of each series from the reference points within the run's times."""
+    with open(path) as f:
+        lines = [l.strip().split(",") for l in f if l.strip() and not l.startswith("#")][1:]
+    for name, f in series.items():
+        pts = np.array([(float(a), float(b)) for n, a, b in lines if n == name and float(a) <= t[-1]])
+        if len(pts) == 0:
+            continue
+        diff = np.interp(pts[:, 0], t, f) - pts[:, 1]
+        k = int(np.argmax(np.abs(diff)))
+        print(f"{name} against {len(pts)} digitised points: largest difference {diff[k]:+.4f} at t = {pts[k, 0]:.2f} "
+              f"({100 * diff[k] / pts[k, 1]:+.2f} %), mean {np.mean(diff):+.4f}")
+
+
+def volume_drift(run, bubble_name):
+    """Largest |V/V0 - 1| of the bubble's volume column of stats.csv, and its final value."""
+    path = os.path.join(run, "stats.csv")
+    if not os.path.exists(path):
+        return np.nan, np.nan
+    with open(path) as f:
+        names = f.readline().strip().split(",")
+    rows = np.loadtxt(path, delimiter=",", skiprows=1, ndmin=2)
+    v = rows[:, names.index("volume_" + bubble_name)]
+    return np.max(np.abs(v / v[0] - 1)), v[-1] / v[0] - 1
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("run")
+    ap.add_argument("--ref", default=DEFAULT_REF)
+    ap.add_argument("--curves", default=DEFAULT_CURVES)
+    ap.add_argument("--csv")
+    ap.add_argument("--tol", type=float)
+    a = ap.parse_args()
+
+    case = read_case(a.run)
+    phases = case["phases"]
+    bubble = int(np.argmin([p["rho0"] for p in phases]))
+    dx = float(case["resolution"]["dx"])
+    h = dx * float(case["resolution"]["h_over_dx"])
+    tanks = [w["box"] for w in case.get("walls", []) if "box" in w and w.get("fluid_side", "inside") == "inside"]
+    box = (np.array(case["domain"]["min"], float), np.array(case["domain"]["max"], float))
+    obstacles = [w["box"] for w in case.get("walls", []) if "box" in w and w.get("fluid_side") == "outside"]
+    if tanks:   # the column: the tank, narrowed by obstacles standing on its sides
+        box = (np.array(tanks[0]["min"], float), np.array(tanks[0]["max"], float))
+        for o in obstacles:
+            if o["max"][0] <= 0.5 * (box[0][0] + box[1][0]):
+                box[0][0] = max(box[0][0], o["max"][0])
+            else:
+                box[1][0] = min(box[1][0], o["min"][0])
+
+    rows = np.array([bubble_row(p, bubble, h, dx, box) for p in sorted(glob.glob(os.path.join(a.run, "snap_*.h5")))])
+    t, area, y_c, v_c, circ = rows[:, :5].T
+    out = a.csv or os.path.join(a.run, "bubble_rise.csv")
+    np.savetxt(out, rows, delimiter=",", fmt="%.8g",
+               header="time,area,y_c,v_c,circularity,contour_area,perimeter,contours", comments="")
+
+    c_min, t_c = extremum(t, circ, "min")
+    v_max, t_v = extremum(t, v_c, "max")
+    drift_max, drift_end = volume_drift(a.run, phases[bubble]["name"])
+    print(f"{len(t)} snapshots, t = {t[0]:.3f} to {t[-1]:.3f} s, dx = {dx:g} m; time series in {out}")
+    print(f"bubble area: {area[0]:.6f} to {area[-1]:.6f} m^2 (stats.csv volume drift: max {drift_max:.2e}, "
+          f"end {drift_end:+.2e}); most closed 0.5 contours in a snapshot: {int(rows[:, 7].max())}")
+    got = {"c_min": c_min, "t_c_min": t_c, "v_max": v_max, "t_v_max": t_v, "y_c_end": y_c[-1]}
+    ref = read_reference(a.ref) if os.path.exists(a.ref) else {}
+    ok = True
+    for name, label in (("c_min", "minimum circularity"), ("t_c_min", "  at t"), ("v_max", "maximum rise velocity"),
+                        ("t_v_max", "  at t"), ("y_c_end", f"centroid y_c at t = {t[-1]:.3f}")):
+        line = f"{label:34s} {got[name]:.4f}"
+        if name in ref and name.startswith("t_"):
+            line += f"   reference {ref[name]:.4f}   difference {got[name] - ref[name]:+.4f}"
+        elif name in ref:
+            err = got[name] / ref[name] - 1
+            line += f"   reference {ref[name]:.4f}   error {100 * err:+.2f} %"
+            if a.tol is not None and not name.startswith("t_") and abs(err) > a.tol:
+                ok = False
+        print(line)
+    if os.path.exists(a.curves):
+        compare_curves(a.curves, t, {"y_c": y_c, "v_c": v_c})
+    if a.tol is not None:
+        if "t_end" in ref and abs(t[-1] - ref["t_end"]) > 1e-6:
+            ok = False
+            print(f"the last snapshot is at t = {t[-1]}, not at the reference's end time {ref['t_end']}")
+        print("PASS" if ok else "FAIL")
+    return 0 if ok else 1
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
