@@ -486,3 +486,43 @@ def sloshing_period(run, dx, period=0.830, gauges=(0.10, 0.47), t_from=1.66):
     notes = "dominant period WG2 %.4f s, WG1 %.4f s (forcing %.3f s); interface amplitude WG2 %.1f mm" % (
         periods[0], periods[1], period, 1000 * np.max(np.abs(rows[rows[:, 0] >= t_from, 1])))
     return abs(periods[0] / period - 1), notes, {"t": rows[:, 0], "wg2": rows[:, 1], "wg1": rows[:, 2]}
+
+
+# --- rising bubble (Hysing et al. 2009, test case 1) ----------------------------------------
+
+def bubble_series(run):
+    """Time [s], centroid height y_c [m] and mean rise velocity v_c [m/s] of the bubble (the
+    lightest phase) in every snapshot, volume-weighted with V = m / rho (Hysing et al. 2009)."""
+    with open(os.path.join(run, "config.yaml")) as f:
+        bubble = int(np.argmin([p["rho0"] for p in yaml.safe_load(f)["phases"]]))
+    rows = []
+    for path in snapshots(run):
+        t, s = read_snapshot(path)
+        b = s["phase"] == bubble
+        vol = s["mass"][b] / s["density"][b]
+        rows.append((t, np.dot(vol, s["position"][b, 1]) / vol.sum(), np.dot(vol, s["velocity"][b, 1]) / vol.sum()))
+    return np.array(rows).T
+
+
+def bubble_curve_errors(t, y_c, v_c, reference):
+    """Largest |v_c - v_ref| / max v_ref and |y_c - y_ref| / max v_ref [s] over the digitised points
+    of the reference (series v_c and y_c) within the run's times, the run linear between snapshots;
+    both relative to the reference's peak rise velocity (y in units of the distance it rises per second)."""
+    ref = read_reference(reference)
+    series, tr, val = ref["series"], ref["time"].astype(float), ref["value"].astype(float)
+    v_peak = val[series == "v_c"].max()
+    out = {}
+    for name, f in (("v_c", v_c), ("y_c", y_c)):
+        use = (series == name) & (tr <= t[-1])
+        out[name] = np.max(np.abs(np.interp(tr[use], t, f) - val[use])) / v_peak
+        out[name + "_ref"] = (tr[series == name], val[series == name])
+    return out
+
+
+def bubble_rise(run, dx, reference):
+    """Rising bubble: max |v_c - v_ref| / max v_ref over the digitised rise-velocity curve."""
+    t, y_c, v_c = bubble_series(run)
+    e = bubble_curve_errors(t, y_c, v_c, reference)
+    notes = "%d snapshots to t = %.3g; y_c(t_end) = %.4f; largest |y_c - y_ref| = %.4f m" % (
+        len(t), t[-1], y_c[-1], e["y_c"] * e["v_c_ref"][1].max())
+    return e["v_c"], notes, {"t": t, "v": v_c, "y": y_c, "t_ref": e["v_c_ref"][0], "v_ref": e["v_c_ref"][1]}

@@ -104,3 +104,10 @@ def sloshing(ax, items):
         ax.plot(c["t"], 1000 * c["wg1"], "--", lw=0.8, color=line.get_color())
     ax.set_xlabel("t [s]")
     ax.set_ylabel("interface elevation [mm]")
+
+
+def bubble(ax, items):
+    """Mean rise velocity of the bubble against time, with the digitised benchmark curve."""
+    _runs_and_reference(ax, items, ("t", "v"), ("t_ref", "v_ref"), "-", "ks", "Hysing et al. 2009 (digitised)")
+    ax.set_xlabel("t")
+    ax.set_ylabel("mean rise velocity v_c")

@@ -249,6 +249,22 @@ STUDIES.append({
 })
 
 
+STUDIES.append({
+    "id": "rising-bubble-hysing",
+    "case": "rising-bubble-hysing",
+    "title": "Rising bubble, test case 1 of Hysing et al. 2009 (density and viscosity ratio 10, Eo 10, Re 35), to t = 3",
+    "length": ("R", 0.25),
+    "reference": "the mean rise velocity digitised from Hysing et al. 2009 (the Lethe project's points), "
+                 "reference/hysing2009_tc1_digitised.csv",
+    "error": "max |v_c - v_ref| / max v_ref over the digitised points; threshold 5 % (the notes' bubble velocity bar, C7)",
+    "threshold": 0.05,
+    "metric": functools.partial(metrics.bubble_rise, reference=DATA.format(
+        case="rising-bubble-hysing", file="hysing2009_tc1_digitised.csv")),
+    "rungs": [rung(0.025, 2, True), rung(0.0125, 2),
+              rung(0.025, 2, True, label="generalized-dissipation", **GD)],
+    "plot": "bubble",
+})
+
 def case_path(study, r=None):
     """The case file of a study, or of one of its rungs."""
     return os.path.join("cases", (r or {}).get("case") or study["case"], "case.yaml")
