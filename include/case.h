@@ -25,6 +25,7 @@ enum free_surface_mode { FREE_SURFACE_AUTO = 0, FREE_SURFACE_ON, FREE_SURFACE_OF
 enum damper_form { DAMPER_DIFFERENCE = 0, DAMPER_SYMMETRIC };
 enum init_pressure { INIT_PRESSURE_HYDROSTATIC = 0, INIT_PRESSURE_ZERO };
 enum interface_pressure { IFACE_P_SUM = 0, IFACE_P_DENSITY_WEIGHTED };
+enum interface_viscosity { IFACE_VISC_NONE = 0, IFACE_VISC_HARMONIC };
 enum spc_model { SPC_PRESENT = 0, SPC_CONVENTIONAL };   /* paper 003 section 3 / section 2.3 */
 enum dissipation_form { DISSIPATION_CONSISTENT = 0, DISSIPATION_PRINTED };
 
@@ -139,6 +140,7 @@ struct case_def {
   int interface_mode;        /* epsilon/phi strategies of paper 000 Appendix A (4 = the final model) */
   enum damper_form damper_form;
   enum interface_pressure interface_pressure;   /* other-phase pressure in the momentum pair sum */
+  enum interface_viscosity interface_viscosity; /* other-phase pairs in the laminar viscosity sum */
   enum spc_model spc_model;  /* scheme same-phase-continuity: paper 003's present model, or its
                                 conventional one (all-neighbour continuity, no Shepard pressure) */
   double interface_sharpness;   /* chi of the interface sharpness force (paper 000 Eq. 20), 0 = off */

@@ -32,6 +32,7 @@ static const char *const BOOL_NAMES[] = {"false", "true", NULL};
 static const char *const FREE_SURFACE_NAMES[] = {"auto", "on", "off", NULL};
 static const char *const DAMPER_NAMES[] = {"difference", "symmetric", NULL};
 static const char *const IFACE_P_NAMES[] = {"sum", "density-weighted", NULL};
+static const char *const IFACE_VISC_NAMES[] = {"none", "harmonic", NULL};
 static const char *const SPC_MODEL_NAMES[] = {"present", "conventional", NULL};
 static const char *const DISSIPATION_NAMES[] = {"consistent", "printed", NULL};
 static const char *const RAMP_NAMES[] = {"none", "linear", "smooth", NULL};
@@ -62,7 +63,7 @@ static const char *const PHYSICS_KEYS[] = {"delta", "artificial_viscosity", "aco
                                            "shifting", "u_max", "tensile_control", "free_surface",
                                            "surface_band", "interface_mode", "damper_form",
                                            "interface_sharpness", "limit_surface_shifting",
-                                           "interface_pressure", "surface_tension", "wall_guard", "spc_model",
+                                           "interface_pressure", "interface_viscosity", "surface_tension", "wall_guard", "spc_model",
                                            "dissipation_form", NULL};
 static const char *const INITIAL_KEYS[] = {"pressure", NULL};
 static const char *const PROBE_KEYS[] = {"name", "kind", "position", "diameter", "axis",
@@ -818,7 +819,7 @@ static double default_u_max(const struct case_def *c) {
 
 static int read_physics(const struct map *root, struct case_def *c) {
   struct map ph;
-  int shifting, tic, fs, form, limit, iface_p, spc_model, diss;
+  int shifting, tic, fs, form, limit, iface_p, iface_visc, spc_model, diss;
   int plus = c->scheme == SCHEME_DELTA_PLUS;   /* the others: no shifting, TIC or damper (papers 001-004) */
   int gd = c->scheme == SCHEME_GENERALIZED_DISSIPATION;   /* paper 004: delta 0.5, physical viscosity only */
   int spc = c->scheme == SCHEME_SAME_PHASE_CONTINUITY;     /* paper 003: alpha_w = 0.05 */
@@ -837,6 +838,7 @@ static int read_physics(const struct map *root, struct case_def *c) {
       num(&ph, "interface_sharpness", &R_NONNEGATIVE, 0, &c->interface_sharpness) ||
       choice(&ph, "limit_surface_shifting", BOOL_NAMES, 0, &limit) ||
       choice(&ph, "interface_pressure", IFACE_P_NAMES, IFACE_P_SUM, &iface_p) ||
+      choice(&ph, "interface_viscosity", IFACE_VISC_NAMES, IFACE_VISC_NONE, &iface_visc) ||
       num(&ph, "surface_tension", &R_NONNEGATIVE, 0, &c->surface_tension) ||
       num(&ph, "wall_guard", &R_NONNEGATIVE, WALL_GUARD_DX, &c->wall_guard) ||
       choice(&ph, "spc_model", SPC_MODEL_NAMES, SPC_PRESENT, &spc_model) ||
@@ -850,6 +852,7 @@ static int read_physics(const struct map *root, struct case_def *c) {
   c->damper_form = (enum damper_form)form;
   c->limit_surface_shifting = limit;
   c->interface_pressure = (enum interface_pressure)iface_p;
+  c->interface_viscosity = (enum interface_viscosity)iface_visc;
   c->spc_model = (enum spc_model)spc_model;
   return 0;
 }
@@ -1208,6 +1211,7 @@ static void put_tail(FILE *f, const struct case_def *c) {
   put_num(f, "  ", "interface_sharpness", c->interface_sharpness);
   put_word(f, "  ", "limit_surface_shifting", BOOL_NAMES[c->limit_surface_shifting != 0]);
   put_word(f, "  ", "interface_pressure", IFACE_P_NAMES[c->interface_pressure]);
+  put_word(f, "  ", "interface_viscosity", IFACE_VISC_NAMES[c->interface_viscosity]);
   put_num(f, "  ", "surface_tension", c->surface_tension);
   put_num(f, "  ", "wall_guard", c->wall_guard);
   put_word(f, "  ", "spc_model", SPC_MODEL_NAMES[c->spc_model]);

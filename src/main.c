@@ -61,33 +61,39 @@ static int same_phase_terms(const struct case_def *c, char *err, size_t len) {
                     : c->tensile_control ? "physics.tensile_control: only false"
                     : c->acoustic_damper > 0 ? "physics.acoustic_damper: only 0"
                     : c->interface_sharpness > 0 ? "physics.interface_sharpness: only 0"
-                    : c->interface_pressure != IFACE_P_SUM ? "physics.interface_pressure: only sum" : NULL;
+                    : c->interface_pressure != IFACE_P_SUM ? "physics.interface_pressure: only sum"
+                    : c->interface_viscosity != IFACE_VISC_NONE ? "physics.interface_viscosity: only none" : NULL;
   if (!key) return 0;
   snprintf(err, len, "%s: %s with scheme same-phase-continuity (paper 003 has no such term)", c->source_file, key);
   return 1;
 }
 
 /* Scheme generalized-dissipation (paper 004) has none of paper 000's shifting, tensile control,
- * acoustic damper, sharpness force or interface-pressure options: refuse them by name. */
+ * acoustic damper, sharpness force or interface-pressure options, nor the interface viscosity:
+ * refuse them by name. */
 static int gd_unsupported(const struct case_def *c, char *err, size_t len) {
   const char *key = c->shifting != SHIFTING_NONE ? "shifting"
                     : c->tensile_control           ? "tensile_control"
                     : c->acoustic_damper > 0       ? "acoustic_damper"
                     : c->interface_sharpness > 0   ? "interface_sharpness"
-                    : c->interface_pressure != IFACE_P_SUM ? "interface_pressure" : NULL;
+                    : c->interface_pressure != IFACE_P_SUM ? "interface_pressure"
+                    : c->interface_viscosity != IFACE_VISC_NONE ? "interface_viscosity" : NULL;
   if (!key) return 0;
   snprintf(err, len, "%s: physics.%s: not part of scheme generalized-dissipation (use none, false, 0 or sum)",
            c->source_file, key);
   return 1;
 }
 
-/* Scheme riemann: fixed walls only (its dual stepper does not move walls) and no surface tension. */
+/* Scheme riemann: fixed walls only (its dual stepper does not move walls), no surface tension and
+ * no interface viscosity (its pair terms are its own). */
 static int riemann_supported(const struct case_def *c, char *err, size_t len) {
   for (int w = 0; w < c->n_walls; w++)
     if (c->walls[w].moving)
       return snprintf(err, len, "%s: walls: scheme riemann supports fixed walls only in this version", c->source_file), 1;
   if (c->surface_tension > 0)
     return snprintf(err, len, "%s: physics.surface_tension: not available with scheme riemann", c->source_file), 1;
+  if (c->interface_viscosity != IFACE_VISC_NONE)
+    return snprintf(err, len, "%s: physics.interface_viscosity: not available with scheme riemann", c->source_file), 1;
   return 0;
 }
 

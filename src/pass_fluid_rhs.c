@@ -3,6 +3,7 @@
  *               + sum_j [(phi_ij rho_j - eps_ij rho_i) du_j + (eps_ii + phi_ii) rho_i du_i] . gW_ij
  *   rho_i du_i/dt = -sum_j (p_j + s_i p_i) gW_ij + K_i sum_{j in phase(i) or wall} pi_ij gW_ij
  *                   + sum_{j in phase(i)} [rho_i u_i (du_i . gW_ij) + rho_j u_j (du_j . gW_ij)]
+ *                   + 2(dim+2) sum_{j other fluid} mu_ij pi_ij gW_ij   (interface viscosity: harmonic)
  *                   - chi sum_{j other fluid} (|p_i| + |p_j|) gW_ij
  *                   + rho_i alpha2 c0 h sum_j (D~_j + D_i) gW_ij   (acoustic damper on liquids, symmetric
  *                        form; D~_j = D_j in the phase of i, 0 in other phases and walls)
@@ -10,7 +11,7 @@
  *                   + rho_i (g - omega^2 (r_i - c))
  * with gW_ij = grad_i W_ij V_j = F_ij (r_i - r_j) V_j, D_i = sum_{j in phase(i)} psi_ij (-F_ij) V_j,
  * psi_ij = 2(rho_j - rho_i) - (<grad rho>_i + <grad rho>_j).r_ji, pi_ij = u_ji.r_ji/(r^2 + 0.01 h^2),
- * K_i = alpha h c0 rho0 + 2(dim+2) mu, s_i = -1 (tensile control: p_i < 0 outside the free-surface
+ * K_i = alpha h c0 rho0 + 2(dim+2) mu, mu_ij = 2 mu_i mu_j/(mu_i + mu_j), s_i = -1 (tensile control: p_i < 0 outside the free-surface
  * region) else +1, D = <div u>. eps/phi: interface.c.
  * The terms a case does not use are compiled out of its loop (see dispatch()). */
 #include <math.h>
@@ -26,8 +27,11 @@ struct centre {
 
 /* Sums over the neighbours of fluid particle i. */
 struct fluid_sums {
-  double diff, drho_du, grad_p[3], visc[3], mom_du[3], damper[3], sharp[3];
+  double diff, drho_du, grad_p[3], visc[3], visc_other[3], mom_du[3], damper[3], sharp[3];
 };
+
+/* Harmonic mean 2 a b/(a + b) of two viscosities [Pa s]; 0 when either is 0. */
+static inline double harmonic_mean(double a, double b) { return a > 0 && b > 0 ? 2.0 * a * b / (a + b) : 0.0; }
 
 /* The pressure of other-phase neighbour j as particle i sees it with the density-weighted
  * interface pressure p_ij = (rho_j p_i + rho_i p_j)/(rho_i + rho_j) (Hu & Adams 2006): the pair
@@ -64,7 +68,8 @@ static inline __attribute__((always_inline)) void fluid_sums(const struct engine
   const double p_sign = ci->p_sign;
   const int visc = DISS & 1, diff = DISS & 2;
   const int weighted = PHASES && e->c->interface_pressure == IFACE_P_DENSITY_WEIGHTED;
-  const double rho0i = e->c->phases[ph].rho0;
+  const int visc_other = PHASES && visc && e->c->interface_viscosity == IFACE_VISC_HARMONIC;
+  const double rho0i = e->c->phases[ph].rho0, mui = e->c->phases[ph].viscosity;
   double xi[3], vi[3], dui[3] = {0, 0, 0}, gri[3];
   for (int d = 0; d < dim; d++) {
     xi[d] = x[d][i];
@@ -112,11 +117,16 @@ static inline __attribute__((always_inline)) void fluid_sums(const struct engine
     }
     if (PHASES == 2 && rel == PAIR_OTHER)
       for (int d = 0; d < dim; d++) s.sharp[d] -= (fabs(pi) + fabs(pres[j])) * fv * dx[d];
-    if (PHASES && rel == PAIR_OTHER) continue;
-    if (visc) {
-      const double pi_ij = -dvdx / (r2 + eta2);   /* u_ji . r_ji / (r^2 + 0.01 h^2), r_ji = -dx */
-      for (int d = 0; d < dim; d++) s.visc[d] += pi_ij * fv * dx[d];
+    const double pi_ij = visc ? -dvdx / (r2 + eta2) : 0.0;   /* u_ji . r_ji / (r^2 + 0.01 h^2), r_ji = -dx */
+    if (PHASES && rel == PAIR_OTHER) {
+      if (visc_other) {   /* symmetric in i and j, so the pair's forces cancel */
+        const double mu_ij = harmonic_mean(mui, e->c->phases[phase[j]].viscosity);
+        for (int d = 0; d < dim; d++) s.visc_other[d] += mu_ij * pi_ij * fv * dx[d];
+      }
+      continue;
     }
+    if (visc)
+      for (int d = 0; d < dim; d++) s.visc[d] += pi_ij * fv * dx[d];
     if (rel == PAIR_WALL) continue;
     if (DAMP == 2)
       for (int d = 0; d < dim; d++) s.damper[d] += (div[j] - div[i]) * fv * dx[d];
@@ -175,6 +185,7 @@ static void finish(struct engine *e, const struct centre *ci, const struct fluid
   const struct phase *f = &e->c->phases[ci->phase];
   const long i = ci->i;
   double k_visc = e->c->alpha * e->h * f->c0 * f->rho0 + 2.0 * (p->dim + 2) * f->viscosity;
+  double k_visc_other = 2.0 * (p->dim + 2);   /* times mu_ij, inside visc_other */
   double k_damp = e->damper_coef[1 + ci->phase], g[3];
   body_acceleration(e, i, g);
   /* delta-sph integrates m/V: its diffusion is -(V/rho^S) times the volume diffusion (paper 001
@@ -183,8 +194,8 @@ static void finish(struct engine *e, const struct centre *ci, const struct fluid
   if (e->features & FEAT_SHEPARD) diffusion *= p->rho[i] / e->w.rho_s[i];
   e->w.drho[i] = -p->rho[i] * e->w.div[i] + diffusion + s->drho_du;
   for (int d = 0; d < p->dim; d++)
-    e->w.dv[d][i] = (-s->grad_p[d] + k_visc * s->visc[d] + s->mom_du[d] + e->c->interface_sharpness * s->sharp[d]) /
-                        p->rho[i] + k_damp * s->damper[d] + g[d];
+    e->w.dv[d][i] = (-s->grad_p[d] + k_visc * s->visc[d] + k_visc_other * s->visc_other[d] + s->mom_du[d] +
+                     e->c->interface_sharpness * s->sharp[d]) / p->rho[i] + k_damp * s->damper[d] + g[d];
 }
 
 /* Phase and tensile-control sign of particle i. */

@@ -73,6 +73,14 @@ refuses gdshift 'physics\.shifting: not part of scheme generalized-dissipation' 
   run gdshift --set scheme=generalized-dissipation --set physics.shifting=consistent
 refuses dissvalue 'physics\.dissipation_form: got .literal., allowed values: consistent, printed' -- \
   run dissvalue --set physics.dissipation_form=literal
+refuses ivisc-riemann 'physics\.interface_viscosity: not available with scheme riemann' -- \
+  run ivisc-riemann --set scheme=riemann --set physics.interface_viscosity=harmonic
+refuses ivisc-spc 'physics\.interface_viscosity: only none with scheme same-phase-continuity' -- \
+  run ivisc-spc --set scheme=same-phase-continuity --set physics.interface_viscosity=harmonic
+refuses ivisc-gd 'physics\.interface_viscosity: not part of scheme generalized-dissipation' -- \
+  run ivisc-gd --set scheme=generalized-dissipation --set physics.interface_viscosity=harmonic
+refuses ivisc-value 'physics\.interface_viscosity: got .arithmetic., allowed values: none, harmonic' -- \
+  run ivisc-value --set physics.interface_viscosity=arithmetic
 # Geometry.
 sed 's/max: \[1, 1\]}}$/max: [1, 1]}}\n  - {phase: water, box: {min: [0.5, 0.5], max: [0.9, 0.9]}}/' \
   "$case" > "$tmp/overlap.yaml"
