@@ -53,6 +53,14 @@ static inline int engine_test_open(char *dir, int len, const char *case_text, st
   return no_folder || engine_test_start(dir, case_text, c, e);
 }
 
+/** Rebuild engine e for its case as it now stands (features, pipeline, neighbour lists) and
+ *  evaluate the right-hand sides of its current state at RK stage 0. Collective. */
+static inline void engine_test_evaluate(struct engine *e) {
+  CHECK(engine_rebuild(e) == 0, "rebuild");
+  e->stage = 0;
+  engine_evaluate(e, 0);
+}
+
 /** A deterministic pseudo-random number in [-0.5, 0.5) from a particle id and a salt, so that
  *  a field made from it is the same on any number of ranks. */
 static inline double engine_test_noise(int64_t id, int salt) {

@@ -82,19 +82,16 @@ static void set_velocities(struct engine *e, const struct case_def *c, int rando
 /* Right-hand sides of the current state with the given interface viscosity. */
 static void evaluate(struct engine *e, struct case_def *c, enum interface_viscosity mode) {
   c->interface_viscosity = mode;
-  CHECK(engine_rebuild(e) == 0, "rebuild");
-  e->stage = 0;
-  engine_evaluate(e, 0);
+  engine_test_evaluate(e);
 }
 
 int main(int argc, char **argv) {
   MPI_Init(&argc, &argv);
-  int rank;
-  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   char dir[256] = "/tmp/mpsph-test-iface-visc-XXXXXX";
   static struct case_def c;
   struct engine e;
   if (engine_test_open(dir, sizeof dir, case_text, &c, &e)) return check_report("test_interface_viscosity");
+  const int rank = e.rank;
   set_velocities(&e, &c, 0);
   evaluate(&e, &c, IFACE_VISC_NONE);
   double a_none = max_acceleration(&e, 1), bulk_none = max_acceleration(&e, 0);
