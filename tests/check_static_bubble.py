@@ -17,42 +17,20 @@ import os
 import sys
 
 import numpy as np
+import yaml
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "scripts"))
-from validation.metrics import read_snapshot, snapshots  # noqa: E402
-
-
-def first_value(run, key):
-    """The first `key: number` of the resolved case (config.yaml, block layout)."""
-    with open(os.path.join(run, "config.yaml")) as f:
-        for line in f:
-            words = line.strip().lstrip("- ").split(":")
-            if words[0] == key:
-                return float(words[1])
-    raise ValueError(f"no {key} in config.yaml")
-
-
-def bubble_state(path, h):
-    """Time, equivalent radius, p_in - p_out, max speed and the count of stray particles."""
-    t, s = read_snapshot(path)
-    inner = s["phase"] == 1
-    r = np.hypot(s["position"][:, 0], s["position"][:, 1])
-    radius = np.sqrt(np.sum(s["mass"][inner] / s["density"][inner]) / np.pi)
-    core, far = inner & (r < radius - 3 * h), ~inner & (r > radius + 3 * h)
-    jump = s["pressure"][core].mean() - s["pressure"][far].mean()
-    stray = np.sum(inner & (r >= radius + 3 * h)) + np.sum(~inner & (r <= radius - 3 * h))
-    return t, radius, jump, np.hypot(s["velocity"][:, 0], s["velocity"][:, 1]).max(), stray
+from validation.metrics import static_bubble_series  # noqa: E402  (the measure, one copy)
 
 
 def main(run, tol=0.05, t_start=0.01):
-    sigma, mu_out = first_value(run, "surface_tension"), first_value(run, "viscosity")
-    h = first_value(run, "dx") * first_value(run, "h_over_dx")
-    rows = np.array([bubble_state(p, h) for p in snapshots(run)])
-    window = rows[rows[:, 0] >= t_start - 1e-12]
-    t, radius, jump, u_max, stray = window.T
+    rows, sigma = static_bubble_series(run, t_start)
+    with open(os.path.join(run, "config.yaml")) as f:
+        mu_out = yaml.safe_load(f)["phases"][0]["viscosity"]
+    t, radius, jump, u_max, stray = rows.T
     laplace = sigma / radius.mean()
     err = jump.mean() / laplace - 1
-    print(f"{len(window)} snapshots, t = {t[0]:.4f} to {t[-1]:.4f} s: R = {radius.mean() * 1e3:.4f} mm, "
+    print(f"{len(t)} snapshots, t = {t[0]:.4f} to {t[-1]:.4f} s: R = {radius.mean() * 1e3:.4f} mm, "
           f"p_in - p_out = {jump.mean():.4f} Pa (snapshots {jump.min():.2f} to {jump.max():.2f}), "
           f"sigma/R = {laplace:.4f} Pa, error {err:+.4f} (limit {tol})")
     print(f"spurious currents: max |u| {u_max.max():.3e} m/s, mean of the per-snapshot maxima "

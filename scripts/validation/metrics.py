@@ -526,3 +526,39 @@ def bubble_rise(run, dx, reference):
     notes = "%d snapshots to t = %.3g; y_c(t_end) = %.4f; largest |y_c - y_ref| = %.4f m" % (
         len(t), t[-1], y_c[-1], e["y_c"] * e["v_c_ref"][1].max())
     return e["v_c"], notes, {"t": t, "v": v_c, "y": y_c, "t_ref": e["v_c_ref"][0], "v_ref": e["v_c_ref"][1]}
+
+
+# --- static bubble (Laplace jump sigma / R in 2D) -------------------------------------------
+
+def static_bubble_state(path, h):
+    """Time [s], equivalent radius sqrt(sum V / pi) of the inner phase (phase 1) [m], p_in - p_out
+    [Pa] (mean pressure of the inner phase within R - 3h of the centre minus that of the outer
+    phase beyond R + 3h), the largest fluid speed [m/s] and the count of particles 3h or more on
+    the other phase's side of R, of one snapshot."""
+    t, s = read_snapshot(path)
+    inner = s["phase"] == 1
+    r = np.hypot(s["position"][:, 0], s["position"][:, 1])
+    radius = np.sqrt(np.sum(s["mass"][inner] / s["density"][inner]) / np.pi)
+    core, far = inner & (r < radius - 3 * h), ~inner & (r > radius + 3 * h)
+    jump = s["pressure"][core].mean() - s["pressure"][far].mean()
+    stray = np.sum(inner & (r >= radius + 3 * h)) + np.sum(~inner & (r <= radius - 3 * h))
+    return t, radius, jump, np.hypot(s["velocity"][:, 0], s["velocity"][:, 1]).max(), stray
+
+
+def static_bubble_series(run, t_start=0.01):
+    """Rows of static_bubble_state over the snapshots from t_start on, and sigma [N/m]."""
+    with open(os.path.join(run, "config.yaml")) as f:
+        case = yaml.safe_load(f)
+    h = case["resolution"]["dx"] * case["resolution"]["h_over_dx"]
+    rows = np.array([static_bubble_state(p, h) for p in snapshots(run)])
+    return rows[rows[:, 0] >= t_start - 1e-12], case["physics"]["surface_tension"]
+
+
+def laplace_jump(run, dx, t_start=0.01):
+    """Static bubble: |<p_in - p_out> / (sigma / <R>) - 1| over the snapshots from t_start on."""
+    rows, sigma = static_bubble_series(run, t_start)
+    t, radius, jump, u_max, stray = rows.T
+    err = abs(jump.mean() / (sigma / radius.mean()) - 1)
+    notes = "%d snapshots from t = %.3g s; p_in - p_out %.3f Pa against sigma/R %.3f Pa; max |u| %.3g m/s; " \
+            "stray particles %d" % (len(t), t[0], jump.mean(), sigma / radius.mean(), u_max.max(), stray.max())
+    return err, notes, {"t": t, "jump": jump, "t_ref": t, "jump_ref": sigma / radius}

@@ -111,3 +111,10 @@ def bubble(ax, items):
     _runs_and_reference(ax, items, ("t", "v"), ("t_ref", "v_ref"), "-", "ks", "Hysing et al. 2009 (digitised)")
     ax.set_xlabel("t")
     ax.set_ylabel("mean rise velocity v_c")
+
+
+def laplace(ax, items):
+    """Pressure jump p_in - p_out of the static bubble against time, with sigma / R."""
+    _runs_and_reference(ax, items, ("t", "jump"), ("t_ref", "jump_ref"), ".-", "k-", "sigma / R")
+    ax.set_xlabel("t [s]")
+    ax.set_ylabel("p_in - p_out [Pa]")

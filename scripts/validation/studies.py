@@ -265,6 +265,19 @@ STUDIES.append({
     "plot": "bubble",
 })
 
+STUDIES.append({
+    "id": "static-bubble",
+    "case": "static-bubble",
+    "title": "Static bubble, density ratio 100, no gravity (fluids and sigma of paper 004 section 4.2.1, in 2D)",
+    "length": ("R", 0.005),
+    "reference": "the Laplace jump sigma / R in 2D, R the radius of the bubble's area",
+    "error": "|<p_in - p_out> / (sigma / R) - 1| averaged over the snapshots from t = 0.01 s; threshold 5 % (issue 7)",
+    "threshold": 0.05,
+    "metric": metrics.laplace_jump,
+    "rungs": [rung(0.0005, 1, True), rung(0.00025, 2)],
+    "plot": "laplace",
+})
+
 def case_path(study, r=None):
     """The case file of a study, or of one of its rungs."""
     return os.path.join("cases", (r or {}).get("case") or study["case"], "case.yaml")
