@@ -16,7 +16,6 @@ Usage: check_static_bubble.py RUN_DIR [TOL [T_START]]   (T_START default 0.01 s)
 import os
 import sys
 
-import numpy as np
 import yaml
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "scripts"))

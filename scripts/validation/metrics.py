@@ -80,6 +80,17 @@ def hydrostatic_centreline(run, dx):
     return err, notes, {"y": y[sel][order], "p": p[sel][order]}
 
 
+def hydrostatic_1phase(run, dx):
+    """Single-phase tank of depth 1 m: max |p - rho g (1 - y)| / (rho g) over the particles within
+    dx of x = 0.5, 2 dx away from the bottom and the free surface, in the last snapshot."""
+    t, s = read_snapshot(snapshots(run)[-1])
+    x, y, p = s["position"][:, 0], s["position"][:, 1], s["pressure"]
+    sel = (np.abs(x - 0.5) < dx) & (y > 2 * dx) & (y < 1.0 - 2 * dx)
+    err = np.max(np.abs(p[sel] - hydrostatic_exact(y[sel], rho_a=0.0))) / (1000.0 * G)
+    order = np.argsort(y[sel])
+    return err, "t = %.3g s; %d centreline particles" % (t, sel.sum()), {"y": y[sel][order], "p": p[sel][order]}
+
+
 # --- oscillating drop (paper 001 section III.B, notes section 3.8) --------------------------
 
 def drop_analytic(t_end, omega=1.0, radius=1.0, n=20000):

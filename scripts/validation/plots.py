@@ -9,23 +9,33 @@ def _label(r):
     return "%s, dx = %g" % (r["label"], r["dx"])
 
 
-def _runs_and_reference(ax, items, keys, ref_keys, style, ref_style, ref_label):
-    """Each rung's curve c[keys[0]], c[keys[1]] and the reference curve of the last rung."""
+def _runs_and_reference(ax, items, keys, ref_keys, style, ref_style, ref_label, axes=None):
+    """Each rung's curve c[keys[0]], c[keys[1]] and the reference curve of the last rung; axes, when
+    given, the (x, y) axis labels."""
     for r, c in items:
         ax.plot(c[keys[0]], c[keys[1]], style, ms=3, lw=0.8, label=_label(r))
     if items:
         c = items[-1][1]
         ax.plot(c[ref_keys[0]], c[ref_keys[1]], ref_style, ms=4, lw=0.8, label=ref_label)
+    if axes:
+        ax.set_xlabel(axes[0])
+        ax.set_ylabel(axes[1])
+
+
+def _centreline(ax, items, top, rho_a):
+    """Centreline pressure against height of every rung, with the exact profile to y = top (air of
+    density rho_a above Hw = 1 m)."""
+    for r, c in items:
+        ax.plot(c["p"] / 1000.0, c["y"], ".", ms=3, label=_label(r))
+    y = np.linspace(0, top, 200)
+    ax.plot(metrics.hydrostatic_exact(y, rho_a=rho_a) / 1000.0, y, "k-", lw=0.8, label="exact")
+    ax.set_xlabel("p [kPa]")
+    ax.set_ylabel("y [m]")
 
 
 def hydrostatic(ax, items):
-    """Centreline pressure against height, with the exact profile."""
-    for r, c in items:
-        ax.plot(c["p"] / 1000.0, c["y"], ".", ms=3, label=_label(r))
-    y = np.linspace(0, 2, 200)
-    ax.plot(metrics.hydrostatic_exact(y) / 1000.0, y, "k-", lw=0.8, label="exact")
-    ax.set_xlabel("p [kPa]")
-    ax.set_ylabel("y [m]")
+    """Centreline pressure against height in the two-phase tank, with the exact profile."""
+    _centreline(ax, items, 2.0, 1.0)
 
 
 def drop(ax, items):
@@ -108,13 +118,16 @@ def sloshing(ax, items):
 
 def bubble(ax, items):
     """Mean rise velocity of the bubble against time, with the digitised benchmark curve."""
-    _runs_and_reference(ax, items, ("t", "v"), ("t_ref", "v_ref"), "-", "ks", "Hysing et al. 2009 (digitised)")
-    ax.set_xlabel("t")
-    ax.set_ylabel("mean rise velocity v_c")
+    _runs_and_reference(ax, items, ("t", "v"), ("t_ref", "v_ref"), "-", "ks", "Hysing et al. 2009 (digitised)",
+                        ("t", "mean rise velocity v_c"))
 
 
 def laplace(ax, items):
     """Pressure jump p_in - p_out of the static bubble against time, with sigma / R."""
-    _runs_and_reference(ax, items, ("t", "jump"), ("t_ref", "jump_ref"), ".-", "k-", "sigma / R")
-    ax.set_xlabel("t [s]")
-    ax.set_ylabel("p_in - p_out [Pa]")
+    _runs_and_reference(ax, items, ("t", "jump"), ("t_ref", "jump_ref"), ".-", "k-", "sigma / R",
+                        ("t [s]", "p_in - p_out [Pa]"))
+
+
+def hydrostatic_1phase(ax, items):
+    """Centreline pressure against height in the single-phase tank, with rho g (H - y)."""
+    _centreline(ax, items, 1.0, 0.0)
