@@ -838,7 +838,7 @@ static int read_physics(const struct map *root, struct case_def *c) {
       num(&ph, "interface_sharpness", &R_NONNEGATIVE, 0, &c->interface_sharpness) ||
       choice(&ph, "limit_surface_shifting", BOOL_NAMES, 0, &limit) ||
       choice(&ph, "interface_pressure", IFACE_P_NAMES, IFACE_P_SUM, &iface_p) ||
-      choice(&ph, "interface_viscosity", IFACE_VISC_NAMES, IFACE_VISC_NONE, &iface_visc) ||
+      choice(&ph, "interface_viscosity", IFACE_VISC_NAMES, gd ? IFACE_VISC_HARMONIC : IFACE_VISC_NONE, &iface_visc) ||
       num(&ph, "surface_tension", &R_NONNEGATIVE, 0, &c->surface_tension) ||
       num(&ph, "wall_guard", &R_NONNEGATIVE, WALL_GUARD_DX, &c->wall_guard) ||
       choice(&ph, "spc_model", SPC_MODEL_NAMES, SPC_PRESENT, &spc_model) ||

@@ -69,15 +69,17 @@ static int same_phase_terms(const struct case_def *c, char *err, size_t len) {
 }
 
 /* Scheme generalized-dissipation (paper 004) has none of paper 000's shifting, tensile control,
- * acoustic damper, sharpness force or interface-pressure options, nor the interface viscosity:
- * refuse them by name. */
+ * acoustic damper, sharpness force or interface-pressure options: refuse them by name. Its
+ * viscosity always couples the phases (interface_viscosity harmonic, its default): refuse none. */
 static int gd_unsupported(const struct case_def *c, char *err, size_t len) {
   const char *key = c->shifting != SHIFTING_NONE ? "shifting"
                     : c->tensile_control           ? "tensile_control"
                     : c->acoustic_damper > 0       ? "acoustic_damper"
                     : c->interface_sharpness > 0   ? "interface_sharpness"
-                    : c->interface_pressure != IFACE_P_SUM ? "interface_pressure"
-                    : c->interface_viscosity != IFACE_VISC_NONE ? "interface_viscosity" : NULL;
+                    : c->interface_pressure != IFACE_P_SUM ? "interface_pressure" : NULL;
+  if (c->interface_viscosity == IFACE_VISC_NONE)
+    return snprintf(err, len, "%s: physics.interface_viscosity: none is not available with scheme generalized-dissipation "
+                    "(its viscosity, paper 004 Eq. 10, always couples the phases: harmonic)", c->source_file), 1;
   if (!key) return 0;
   snprintf(err, len, "%s: physics.%s: not part of scheme generalized-dissipation (use none, false, 0 or sum)",
            c->source_file, key);

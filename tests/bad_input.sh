@@ -77,8 +77,8 @@ refuses ivisc-riemann 'physics\.interface_viscosity: not available with scheme r
   run ivisc-riemann --set scheme=riemann --set physics.interface_viscosity=harmonic
 refuses ivisc-spc 'physics\.interface_viscosity: only none with scheme same-phase-continuity' -- \
   run ivisc-spc --set scheme=same-phase-continuity --set physics.interface_viscosity=harmonic
-refuses ivisc-gd 'physics\.interface_viscosity: not part of scheme generalized-dissipation' -- \
-  run ivisc-gd --set scheme=generalized-dissipation --set physics.interface_viscosity=harmonic
+refuses ivisc-gd 'physics\.interface_viscosity: none is not available with scheme generalized-dissipation' -- \
+  run ivisc-gd --set scheme=generalized-dissipation --set physics.interface_viscosity=none
 refuses ivisc-value 'physics\.interface_viscosity: got .arithmetic., allowed values: none, harmonic' -- \
   run ivisc-value --set physics.interface_viscosity=arithmetic
 # Geometry.
