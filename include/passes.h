@@ -21,6 +21,10 @@ static inline void body_acceleration(const struct engine *e, long i, double *f) 
   for (int d = 0; d < e->p.dim; d++) f[d] = c->gravity[d] - w2 * (e->p.x[d][i] - c->potential_centre[d]);
 }
 
+/** Harmonic mean 2 a b/(a + b) of two viscosities [Pa s], the viscosity of a pair of phases
+ *  (Hu & Adams 2006); 0 when either is 0. */
+static inline double harmonic_mean(double a, double b) { return a + b > 0 ? 2.0 * a * b / (a + b) : 0.0; }
+
 /** Work on owned particle i with its neighbour list (empty for wall ghosts). */
 typedef void (*particle_fn)(struct engine *e, long i, const struct neighbours *nb);
 

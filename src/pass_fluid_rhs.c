@@ -30,9 +30,6 @@ struct fluid_sums {
   double diff, drho_du, grad_p[3], visc[3], visc_other[3], mom_du[3], damper[3], sharp[3];
 };
 
-/* Harmonic mean 2 a b/(a + b) of two viscosities [Pa s]; 0 when either is 0. */
-static inline double harmonic_mean(double a, double b) { return a > 0 && b > 0 ? 2.0 * a * b / (a + b) : 0.0; }
-
 /* The pressure of other-phase neighbour j as particle i sees it with the density-weighted
  * interface pressure p_ij = (rho_j p_i + rho_i p_j)/(rho_i + rho_j) (Hu & Adams 2006): the pair
  * term p_j' + p_i equals 2 p_ij, so p_j' = 2 p_ij - p_i [Pa]. */

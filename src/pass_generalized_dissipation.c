@@ -100,7 +100,7 @@ static void gd_rhs(struct engine *e, long i, const struct neighbours *nb) {
     if (r2 >= e->kern.support2) continue;
     double fv = kernel_f(&e->kern, r2) * vol[j];
     double muj = p->phase[j] == PHASE_WALL ? mui : mu[p->phase[j]];
-    double mu_ij = mui + muj > 0 ? 4.0 * mui * muj / (mui + muj) : 0.0;
+    double mu_ij = 2.0 * harmonic_mean(mui, muj);
     double visc = mu_ij * fv * r2 / (r2 + eta2), pg = pgi + pres[j] / gam[j];
     for (int d = 0; d < dim; d++) {
       dvdx += (p->v[d][j] - p->v[d][i]) * dx[d];

@@ -53,9 +53,6 @@ static double phase_mu(const struct engine *e, int k) {
   return e->c->alpha * e->h * f->c0 * f->rho0 / (2.0 * (e->p.dim + 2)) + f->viscosity;
 }
 
-/* Harmonic mean 2 a b / (a + b), 0 when both are 0. */
-static double harmonic_mean(double a, double b) { return a + b > 0 ? 2.0 * a * b / (a + b) : 0.0; }
-
 void spc_wall_repulsion(const struct engine *e, long i, long b, double *acc) {
   const struct parts *p = &e->p;
   const int dim = p->dim;

@@ -74,12 +74,11 @@ static void wall_kinematics(const struct engine *e, int w, const double *x, doub
  * (one phase: exact for a hydrostatic field whatever part of the support is filled). */
 static double ghost_pressure(const struct engine *e, long k, const double *xs, const double *src,
                              const double *aw, int per_neighbour) {
-  const double *r_k[3] = {e->p.x[0], e->p.x[1], e->p.x[2]};
   double pressure = src[SHEPARD_P] / src[SHEPARD_W], rho_star = src[SHEPARD_RHO] / src[SHEPARD_W];
   for (int d = 0; d < e->p.dim; d++) {
     double acc = e->c->gravity[d] - aw[d];
-    pressure += per_neighbour ? acc * (r_k[d][k] * rho_star - src[SHEPARD_RHO_R + d] / src[SHEPARD_W])
-                              : rho_star * acc * (r_k[d][k] - xs[d]);
+    pressure += per_neighbour ? acc * (e->p.x[d][k] * rho_star - src[SHEPARD_RHO_R + d] / src[SHEPARD_W])
+                              : rho_star * acc * (e->p.x[d][k] - xs[d]);
   }
   return pressure;
 }
