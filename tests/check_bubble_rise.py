@@ -46,33 +46,15 @@ import os
 import sys
 
 import contourpy
-import h5py
 import numpy as np
-import yaml
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "scripts"))
-from validation.metrics import bubble_curve_errors  # noqa: E402  (the curve comparison, one copy)
+from validation.metrics import (bubble_curve_errors, bubble_moments, bubble_phase, read_config,  # noqa: E402
+                                read_csv, read_reference, read_snapshot)  # (one copy of each)
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 DEFAULT_REF = os.path.join(HERE, "..", "cases", "rising-bubble-hysing", "reference", "hysing2009_tc1.csv")
 DEFAULT_CURVES = os.path.join(os.path.dirname(DEFAULT_REF), "hysing2009_tc1_digitised.csv")
-
-
-def read_case(run):
-    """The resolved case of a run (config.yaml)."""
-    with open(os.path.join(run, "config.yaml")) as f:
-        return yaml.safe_load(f)
-
-
-def read_snapshot(path):
-    """Time and the fluid particles of a snapshot (wall ghosts dropped)."""
-    with h5py.File(path, "r") as f:
-        t = float(f["header"].attrs["time"])
-        phase = f["particles/phase"][:]
-        keep = phase >= 0
-        s = {k: f["particles/" + k][:][keep] for k in ("position", "velocity", "density", "mass")}
-    s["phase"] = phase[keep]
-    return t, s
 
 
 def colour_grid(x, vol, inside, h, spacing, lo, hi):
@@ -117,9 +99,7 @@ def bubble_row(path, bubble, h, dx, box):
     vol = s["mass"] / s["density"]
     inside = (s["phase"] == bubble).astype(float)
     b = s["phase"] == bubble
-    area = vol[b].sum()
-    y_c = np.dot(vol[b], s["position"][b, 1]) / area
-    v_c = np.dot(vol[b], s["velocity"][b, 1]) / area
+    area, y_c, v_c = bubble_moments(s, bubble)
     # the grid covers the bubble plus 4h, clipped to the column
     lo = np.maximum(s["position"][b].min(axis=0) - 4 * h, box[0])
     hi = np.minimum(s["position"][b].max(axis=0) + 4 * h, box[1])
@@ -141,15 +121,10 @@ def extremum(t, f, kind):
     return f[k], t[k]
 
 
-def read_reference(path):
+def read_quantities(path):
     """quantity -> value of the reference CSV ('#' comments, header quantity,value)."""
-    ref = {}
-    with open(path) as f:
-        lines = [l.strip() for l in f if l.strip() and not l.startswith("#")]
-    for line in lines[1:]:
-        name, value = line.split(",")[:2]
-        ref[name] = float(value)
-    return ref
+    ref = read_reference(path)
+    return dict(zip(ref["quantity"], ref["value"].astype(float)))
 
 
 def compare_curves(path, t, y_c, v_c):
@@ -168,12 +143,10 @@ def probe_rise_velocity(run, phase_name, window):
     path = os.path.join(run, "probes.csv")
     if not os.path.exists(path):
         return None
-    with open(path) as f:
-        names = f.readline().strip().split(",")
-    if phase_name + "_com_y" not in names:
+    probes = read_csv(path)
+    if phase_name + "_com_y" not in probes:
         return None
-    rows = np.loadtxt(path, delimiter=",", skiprows=1, ndmin=2)
-    t, y = rows[:, names.index("time")], rows[:, names.index(phase_name + "_com_y")]
+    t, y = probes["time"], probes[phase_name + "_com_y"]
     v = np.gradient(y, t)
     inside = (t >= t[0] + window / 2) & (t <= t[-1] - window / 2)
     mean = np.array([v[np.abs(t - tk) <= window / 2].mean() for tk in t[inside]])
@@ -186,10 +159,7 @@ def volume_drift(run, bubble_name):
     path = os.path.join(run, "stats.csv")
     if not os.path.exists(path):
         return np.nan, np.nan
-    with open(path) as f:
-        names = f.readline().strip().split(",")
-    rows = np.loadtxt(path, delimiter=",", skiprows=1, ndmin=2)
-    v = rows[:, names.index("volume_" + bubble_name)]
+    v = read_csv(path)["volume_" + bubble_name]
     return np.max(np.abs(v / v[0] - 1)), v[-1] / v[0] - 1
 
 
@@ -204,9 +174,9 @@ def main():
     ap.add_argument("--smooth", type=float, default=0.2)
     a = ap.parse_args()
 
-    case = read_case(a.run)
+    case = read_config(a.run)
     phases = case["phases"]
-    bubble = int(np.argmin([p["rho0"] for p in phases]))
+    bubble = bubble_phase(case)
     dx = float(case["resolution"]["dx"])
     h = dx * float(case["resolution"]["h_over_dx"])
     tanks = [w["box"] for w in case.get("walls", []) if "box" in w and w.get("fluid_side", "inside") == "inside"]
@@ -233,7 +203,7 @@ def main():
     print(f"bubble area: {area[0]:.6f} to {area[-1]:.6f} m^2 (stats.csv volume drift: max {drift_max:.2e}, "
           f"end {drift_end:+.2e}); most closed 0.5 contours in a snapshot: {int(rows[:, 7].max())}")
     got = {"c_min": c_min, "t_c_min": t_c, "v_max": v_max, "t_v_max": t_v, "y_c_end": y_c[-1]}
-    ref = read_reference(a.ref) if os.path.exists(a.ref) else {}
+    ref = read_quantities(a.ref) if os.path.exists(a.ref) else {}
     ok = True
     if a.tol is not None and len(a.tol) not in (1, 3):
         ap.error("--tol takes one bound or three (c_min, v_max, y_c_end)")

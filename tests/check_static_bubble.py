@@ -16,16 +16,14 @@ Usage: check_static_bubble.py RUN_DIR [TOL [T_START]]   (T_START default 0.01 s)
 import os
 import sys
 
-import yaml
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "scripts"))
-from validation.metrics import static_bubble_series  # noqa: E402  (the measure, one copy)
+from validation.metrics import read_config, static_bubble_series  # noqa: E402  (the measure, one copy)
 
 
 def main(run, tol=0.05, t_start=0.01):
     rows, sigma = static_bubble_series(run, t_start)
-    with open(os.path.join(run, "config.yaml")) as f:
-        mu_out = yaml.safe_load(f)["phases"][0]["viscosity"]
+    mu_out = read_config(run)["phases"][0]["viscosity"]
     t, radius, jump, u_max, stray = rows.T
     laplace = sigma / radius.mean()
     err = jump.mean() / laplace - 1

@@ -36,6 +36,12 @@ def read_snapshot(path):
     return t, data
 
 
+def read_config(run):
+    """The resolved case of a run (its config.yaml) as a dict."""
+    with open(os.path.join(run, "config.yaml")) as f:
+        return yaml.safe_load(f)
+
+
 def read_csv(path):
     """A CSV with a header row as a dict of float columns."""
     with open(path) as f:
@@ -62,8 +68,7 @@ def hydrostatic_exact(y, h_w=1.0, rho_w=1000.0, rho_a=1.0):
 
 def background_pressure(run):
     """The background pressure p_b of the first phase from the run's resolved case [Pa]."""
-    with open(os.path.join(run, "config.yaml")) as f:
-        return float(yaml.safe_load(f)["phases"][0]["p_background"])
+    return float(read_config(run)["phases"][0]["p_background"])
 
 
 def hydrostatic_centreline(run, dx):
@@ -501,17 +506,27 @@ def sloshing_period(run, dx, period=0.830, gauges=(0.10, 0.47), t_from=1.66):
 
 # --- rising bubble (Hysing et al. 2009, test case 1) ----------------------------------------
 
+def bubble_phase(case):
+    """Index of the bubble's phase in a resolved case: the lightest."""
+    return int(np.argmin([p["rho0"] for p in case["phases"]]))
+
+
+def bubble_moments(s, bubble):
+    """Area (volume) sum V [m^2], centroid height y_c [m] and mean rise velocity v_c [m/s] of the
+    particles of phase `bubble` in snapshot particles s, with V = m / rho (Hysing et al. 2009)."""
+    b = s["phase"] == bubble
+    vol = s["mass"][b] / s["density"][b]
+    area = vol.sum()
+    return area, np.dot(vol, s["position"][b, 1]) / area, np.dot(vol, s["velocity"][b, 1]) / area
+
+
 def bubble_series(run):
-    """Time [s], centroid height y_c [m] and mean rise velocity v_c [m/s] of the bubble (the
-    lightest phase) in every snapshot, volume-weighted with V = m / rho (Hysing et al. 2009)."""
-    with open(os.path.join(run, "config.yaml")) as f:
-        bubble = int(np.argmin([p["rho0"] for p in yaml.safe_load(f)["phases"]]))
+    """Time [s], y_c [m] and v_c [m/s] of the bubble (the lightest phase) in every snapshot."""
+    bubble = bubble_phase(read_config(run))
     rows = []
     for path in snapshots(run):
         t, s = read_snapshot(path)
-        b = s["phase"] == bubble
-        vol = s["mass"][b] / s["density"][b]
-        rows.append((t, np.dot(vol, s["position"][b, 1]) / vol.sum(), np.dot(vol, s["velocity"][b, 1]) / vol.sum()))
+        rows.append((t,) + bubble_moments(s, bubble)[1:])
     return np.array(rows).T
 
 
@@ -558,8 +573,7 @@ def static_bubble_state(path, h):
 
 def static_bubble_series(run, t_start=0.01):
     """Rows of static_bubble_state over the snapshots from t_start on, and sigma [N/m]."""
-    with open(os.path.join(run, "config.yaml")) as f:
-        case = yaml.safe_load(f)
+    case = read_config(run)
     h = case["resolution"]["dx"] * case["resolution"]["h_over_dx"]
     rows = np.array([static_bubble_state(p, h) for p in snapshots(run)])
     return rows[rows[:, 0] >= t_start - 1e-12], case["physics"]["surface_tension"]
