@@ -114,16 +114,17 @@ static inline __attribute__((always_inline)) void fluid_sums(const struct engine
     }
     if (PHASES == 2 && rel == PAIR_OTHER)
       for (int d = 0; d < dim; d++) s.sharp[d] -= (fabs(pi) + fabs(pres[j])) * fv * dx[d];
-    const double pi_ij = visc ? -dvdx / (r2 + eta2) : 0.0;   /* u_ji . r_ji / (r^2 + 0.01 h^2), r_ji = -dx */
     if (PHASES && rel == PAIR_OTHER) {
-      if (visc_other) {   /* symmetric in i and j, so the pair's forces cancel */
-        const double mu_ij = harmonic_mean(mui, e->c->phases[phase[j]].viscosity);
+      if (visc_other) {   /* mu_ij pi_ij is symmetric in i and j, so the pair's forces cancel */
+        const double mu_ij = harmonic_mean(mui, e->c->phases[phase[j]].viscosity), pi_ij = -dvdx / (r2 + eta2);
         for (int d = 0; d < dim; d++) s.visc_other[d] += mu_ij * pi_ij * fv * dx[d];
       }
       continue;
     }
-    if (visc)
+    if (visc) {
+      const double pi_ij = -dvdx / (r2 + eta2);   /* u_ji . r_ji / (r^2 + 0.01 h^2), r_ji = -dx */
       for (int d = 0; d < dim; d++) s.visc[d] += pi_ij * fv * dx[d];
+    }
     if (rel == PAIR_WALL) continue;
     if (DAMP == 2)
       for (int d = 0; d < dim; d++) s.damper[d] += (div[j] - div[i]) * fv * dx[d];
