@@ -102,9 +102,9 @@ def run_study(study, args):
     """Run and evaluate every selected rung of a study; returns the rows."""
     rows = []
     for r in study["rungs"]:
-        if args.quick and not r["quick"]:
-            continue
         out = rung_dir(args.runs, study, r)
+        if args.quick and not r["quick"] and not (args.reuse and os.path.exists(os.path.join(out, "validate.json"))):
+            continue   # a fine rung: QUICK runs none, and with --reuse reports those run before
         print("%s: %s dx = %g on %d ranks ..." % (study["id"], r["label"], r["dx"], r["np"]), flush=True)
         rec = run_rung(study, r, out, args.reuse)
         err, notes, curves = evaluate(study, r, out, rec)

@@ -159,7 +159,10 @@ STUDIES = [
     },
     impact_study("dambreak-impact", "dambreak-1phase",
                  "Dam break, first impact at the right-wall sensor P1 (Buchner 2002)",
-                 [rung(dx, n, q, **IMPACT_RUN) for dx, n, q in ((0.024, 1, True), (0.012, 2, False), (0.006, 2, False))]),
+                 [rung(dx, n, q, **IMPACT_RUN) for dx, n, q in ((0.024, 1, True), (0.012, 2, False), (0.006, 2, False))] +
+                 # paper 000's sensitivity value of alpha: its viscosity alpha h c0 / 8 slows the front less
+                 [rung(dx, n, q, label="delta-plus, alpha = 0.02", **IMPACT_RUN, **{"physics.artificial_viscosity": 0.02})
+                  for dx, n, q in ((0.024, 1, True), (0.012, 2, False), (0.006, 2, False))]),
     impact_study("dambreak-2phase", "dambreak-2phase",
                  "Two-phase dam break, first impact at P1 (Buchner 2002), consistent and position-only shifting",
                  [rung(0.048, 2, True, **DB2_COARSE, **IMPACT_RUN), rung(0.024, 2, **IMPACT_RUN),
