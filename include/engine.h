@@ -222,6 +222,10 @@ int engine_repartition(struct engine *e);
  *  support at every stage [m]. */
 double engine_shift_max(const struct engine *e);
 
+/** The capillary time-step limit 0.25 (rho_min h^3 / (2 pi sigma))^(1/2), rho_min the smallest
+ *  rho0 of the phases (Brackbill et al. 1992; Adami et al. 2010) [s]. */
+double engine_capillary_dt(const struct engine *e);
+
 /** 1 if slot i is a ghost of a moving wall. */
 static inline int engine_moving_ghost(const struct engine *e, long i) {
   return e->p.phase[i] == PHASE_WALL && e->c->walls[e->p.wall[i]].moving;

@@ -127,10 +127,11 @@ static void add_volumes_and_lists(struct engine *e) {
   add_op(e, "neighbour lists of the owned fluid (once per step)", pass_neighbour_lists, 0, 1);
 }
 
-/* Scheme riemann: its own terms, with the walls, the potential and (with a light phase) the
- * transport velocity; the delta-plus options of the case do not apply. */
+/* Scheme riemann: its own terms, with the walls, the potential, (with a light phase) the
+ * transport velocity and the surface tension; the delta-plus options of the case do not apply. */
 static unsigned riemann_features(const struct case_def *c) {
   unsigned f = FEAT_RIEMANN | (c->n_walls ? FEAT_WALLS : 0) | (c->potential_omega > 0 ? FEAT_CENTRAL : 0);
+  if (c->surface_tension > 0 && c->n_phases > 1) f |= FEAT_SURFACE_TENSION;
   for (int ph = 0; ph < c->n_phases; ph++)
     if (riemann_light_phase(c, ph)) f |= FEAT_TRANSPORT_VELOCITY;
   return f;
@@ -370,9 +371,7 @@ static void limit_by(double *dt, const char **limit, double candidate, const cha
   }
 }
 
-/* The capillary time-step limit 0.25 (rho_min h^3 / (2 pi sigma))^(1/2), rho_min the smallest
- * rho0 of the phases (Brackbill et al. 1992; Adami et al. 2010) [s]. */
-static double capillary_step(const struct engine *e) {
+double engine_capillary_dt(const struct engine *e) {
   double rho_min = INFINITY;
   for (int ph = 0; ph < e->c->n_phases; ph++) rho_min = fmin(rho_min, e->c->phases[ph].rho0);
   return 0.25 * sqrt(rho_min * e->h * e->h * e->h / (2.0 * 3.14159265358979323846 * e->c->surface_tension));
@@ -396,7 +395,7 @@ static double delta_plus_step(const struct engine *e, double a_max, const char *
     if ((e->features & FEAT_DAMPER) && f->incompressible)
       limit_by(&dt, limit, c->cfl * e->h / (c->acoustic_damper * f->c0), "acoustic damper");
   }
-  if (e->features & FEAT_SURFACE_TENSION) limit_by(&dt, limit, capillary_step(e), "capillary");
+  if (e->features & FEAT_SURFACE_TENSION) limit_by(&dt, limit, engine_capillary_dt(e), "capillary");
   return dt;
 }
 

@@ -23,7 +23,7 @@
 
 /* The operations, in the order of the pipeline. */
 enum { OP_STATE_HALO, OP_VOLUMES, OP_LISTS, OP_REINIT, OP_REINIT_HALO,
-       OP_TRANSPORT, OP_MOMENTUM, OP_CONTINUITY, N_DUAL_OPS };
+       OP_TRANSPORT, OP_MOMENTUM, OP_NORMALS, OP_NORMALS_HALO, OP_SURFACE_TENSION, OP_CONTINUITY, N_DUAL_OPS };
 
 static const struct {
   const char *name;
@@ -39,6 +39,10 @@ static const struct {
     {"transport-velocity acceleration of the light phases (once per advection step)",
      pass_transport_acceleration, 0, FEAT_TRANSPORT_VELOCITY},
     {"Riemann momentum (first half of each acoustic sub-step)", pass_riemann_momentum, 0, 0},
+    {"surface tension: colour gradient, interface normals (each acoustic sub-step)", pass_interface_normals, 0,
+     FEAT_SURFACE_TENSION},
+    {"halo: interface normals", NULL, HF_INTERFACE_NORMAL, FEAT_SURFACE_TENSION},
+    {"surface tension: curvature, CSF force added to the momentum", pass_surface_tension, 0, FEAT_SURFACE_TENSION},
     {"Riemann continuity (second half of each acoustic sub-step)", pass_riemann_continuity, 0, 0},
 };
 
@@ -103,8 +107,12 @@ double dual_advection_dt(struct engine *e, double a_tv) {
   return dt;
 }
 
-/* The acoustic sub-step [s] from the maxima m of fluid_maxima. */
-static double acoustic_dt(const struct engine *e, const double *m) { return e->c->cfl * e->h / (e->c_max + m[0]); }
+/* The acoustic sub-step [s] from the maxima m of fluid_maxima, and the capillary limit with
+ * surface tension. */
+static double acoustic_dt(const struct engine *e, const double *m) {
+  double dt = e->c->cfl * e->h / (e->c_max + m[0]);
+  return (e->features & FEAT_SURFACE_TENSION) ? fmin(dt, engine_capillary_dt(e)) : dt;
+}
 
 double dual_acoustic_dt(struct engine *e) {
   double m[3];
@@ -169,7 +177,7 @@ static int acoustic_substep(struct engine *e, double dt) {
   compress(e, 0.5 * dt);
   move(e, 0.5 * dt, 0);
   refresh(e);
-  run(e, OP_MOMENTUM);
+  for (int id = OP_MOMENTUM; id <= OP_SURFACE_TENSION; id++) run(e, id);
   if (engine_check_derivatives(e)) return 2;
   if (guard) pass_wall_guard(e);
   accelerate(e, dt);

@@ -86,14 +86,12 @@ static int gd_unsupported(const struct case_def *c, char *err, size_t len) {
   return 1;
 }
 
-/* Scheme riemann: fixed walls only (its dual stepper does not move walls), no surface tension and
- * no interface viscosity (its pair terms are its own). */
+/* Scheme riemann: fixed walls only (its dual stepper does not move walls) and no interface
+ * viscosity (its pair terms are its own). */
 static int riemann_supported(const struct case_def *c, char *err, size_t len) {
   for (int w = 0; w < c->n_walls; w++)
     if (c->walls[w].moving)
       return snprintf(err, len, "%s: walls: scheme riemann supports fixed walls only in this version", c->source_file), 1;
-  if (c->surface_tension > 0)
-    return snprintf(err, len, "%s: physics.surface_tension: not available with scheme riemann", c->source_file), 1;
   if (c->interface_viscosity != IFACE_VISC_NONE)
     return snprintf(err, len, "%s: physics.interface_viscosity: not available with scheme riemann", c->source_file), 1;
   return 0;

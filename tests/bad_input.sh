@@ -63,8 +63,6 @@ refuses h-large 'resolution\.h_over_dx: got .20., expected a number > 0 and <= 1
   run h-large --set resolution.h_over_dx=20
 refuses band 'phases\.0\.density_band: got \[1\.1, 2\], expected a list \[min_ratio, max_ratio\]' -- \
   run band --set 'phases.0.density_band=[1.1, 2]'
-refuses riemann-tension 'physics\.surface_tension: not available with scheme riemann' -- \
-  run riemann-tension --set scheme=riemann --set physics.surface_tension=0.07
 refuses spc-shifting 'physics\.shifting: only none with scheme same-phase-continuity' -- \
   run spc-shifting --set scheme=same-phase-continuity --set physics.shifting=consistent
 refuses dissform 'physics\.dissipation_form: only scheme generalized-dissipation has one' -- \
