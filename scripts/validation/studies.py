@@ -289,7 +289,11 @@ STUDIES.append({
     "error": "|<p_in - p_out> / (sigma / R) - 1| averaged over the snapshots from t = 0.01 s; threshold 5 % (issue 7)",
     "threshold": 0.05,
     "metric": metrics.laplace_jump,
-    "rungs": [rung(0.0005, 1, True), rung(0.00025, 2)],
+    # every scheme, with the case's phases (riemann with paper 002's kernel, h and CFL)
+    "rungs": [rung(dx, n, q, label=label, **sets) for label, sets in
+              (("delta-plus", {}), ("delta-sph", DELTA_SPH), ("riemann", RIEMANN), (SPC, SPC_CASE_PHASES),
+               ("generalized-dissipation", GD))
+              for dx, n, q in ((0.0005, 1, True), (0.00025, 2, False))],
     "plot": "laplace",
 })
 
