@@ -822,6 +822,7 @@ static int read_physics(const struct map *root, struct case_def *c) {
   int shifting, tic, fs, form, limit, iface_p, iface_visc, spc_model, diss;
   int plus = c->scheme == SCHEME_DELTA_PLUS;   /* the others: no shifting, TIC or damper (papers 001-004) */
   int gd = c->scheme == SCHEME_GENERALIZED_DISSIPATION;   /* paper 004: delta 0.5, physical viscosity only */
+  int coupled = gd || c->scheme == SCHEME_RIEMANN;   /* viscosity harmonic across the phases (004 Eq. 10, 002 Eq. 9) */
   int spc = c->scheme == SCHEME_SAME_PHASE_CONTINUITY;     /* paper 003: alpha_w = 0.05 */
   double mode;
   if (sub(root, "physics", PHYSICS_KEYS, &ph) ||
@@ -838,7 +839,7 @@ static int read_physics(const struct map *root, struct case_def *c) {
       num(&ph, "interface_sharpness", &R_NONNEGATIVE, 0, &c->interface_sharpness) ||
       choice(&ph, "limit_surface_shifting", BOOL_NAMES, 0, &limit) ||
       choice(&ph, "interface_pressure", IFACE_P_NAMES, IFACE_P_SUM, &iface_p) ||
-      choice(&ph, "interface_viscosity", IFACE_VISC_NAMES, gd ? IFACE_VISC_HARMONIC : IFACE_VISC_NONE, &iface_visc) ||
+      choice(&ph, "interface_viscosity", IFACE_VISC_NAMES, coupled ? IFACE_VISC_HARMONIC : IFACE_VISC_NONE, &iface_visc) ||
       num(&ph, "surface_tension", &R_NONNEGATIVE, 0, &c->surface_tension) ||
       num(&ph, "wall_guard", &R_NONNEGATIVE, WALL_GUARD_DX, &c->wall_guard) ||
       choice(&ph, "spc_model", SPC_MODEL_NAMES, SPC_PRESENT, &spc_model) ||

@@ -68,6 +68,15 @@ static int same_phase_terms(const struct case_def *c, char *err, size_t len) {
   return 1;
 }
 
+/* Schemes whose viscosity always couples the phases with the harmonic mean (interface_viscosity
+ * harmonic, their default) refuse none; why names the scheme's equation. Returns 0 or 1. */
+static int coupled_viscosity_refused(const struct case_def *c, const char *scheme, const char *why, char *err,
+                                     size_t len) {
+  if (c->interface_viscosity != IFACE_VISC_NONE) return 0;
+  return snprintf(err, len, "%s: physics.interface_viscosity: none is not available with scheme %s "
+                  "(its viscosity, %s, always couples the phases: harmonic)", c->source_file, scheme, why), 1;
+}
+
 /* Scheme generalized-dissipation (paper 004) has none of paper 000's shifting, tensile control,
  * acoustic damper, sharpness force or interface-pressure options: refuse them by name. Its
  * viscosity always couples the phases (interface_viscosity harmonic, its default): refuse none. */
@@ -77,24 +86,20 @@ static int gd_unsupported(const struct case_def *c, char *err, size_t len) {
                     : c->acoustic_damper > 0       ? "acoustic_damper"
                     : c->interface_sharpness > 0   ? "interface_sharpness"
                     : c->interface_pressure != IFACE_P_SUM ? "interface_pressure" : NULL;
-  if (c->interface_viscosity == IFACE_VISC_NONE)
-    return snprintf(err, len, "%s: physics.interface_viscosity: none is not available with scheme generalized-dissipation "
-                    "(its viscosity, paper 004 Eq. 10, always couples the phases: harmonic)", c->source_file), 1;
+  if (coupled_viscosity_refused(c, "generalized-dissipation", "paper 004 Eq. 10", err, len)) return 1;
   if (!key) return 0;
   snprintf(err, len, "%s: physics.%s: not part of scheme generalized-dissipation (use none, false, 0 or sum)",
            c->source_file, key);
   return 1;
 }
 
-/* Scheme riemann: fixed walls only (its dual stepper does not move walls) and no interface
- * viscosity (its pair terms are its own). */
+/* Scheme riemann: fixed walls only (its dual stepper does not move walls); its viscous pair term
+ * takes the harmonic mean of the two particles' viscosities, across phases too: refuse none. */
 static int riemann_supported(const struct case_def *c, char *err, size_t len) {
   for (int w = 0; w < c->n_walls; w++)
     if (c->walls[w].moving)
       return snprintf(err, len, "%s: walls: scheme riemann supports fixed walls only in this version", c->source_file), 1;
-  if (c->interface_viscosity != IFACE_VISC_NONE)
-    return snprintf(err, len, "%s: physics.interface_viscosity: not available with scheme riemann", c->source_file), 1;
-  return 0;
+  return coupled_viscosity_refused(c, "riemann", "paper 002 Eqs. 6-9 with the harmonic mean", err, len);
 }
 
 /* What this build and the chosen scheme can run; anything else is refused with a reason. */

@@ -71,8 +71,8 @@ refuses gdshift 'physics\.shifting: not part of scheme generalized-dissipation' 
   run gdshift --set scheme=generalized-dissipation --set physics.shifting=consistent
 refuses dissvalue 'physics\.dissipation_form: got .literal., allowed values: consistent, printed' -- \
   run dissvalue --set physics.dissipation_form=literal
-refuses ivisc-riemann 'physics\.interface_viscosity: not available with scheme riemann' -- \
-  run ivisc-riemann --set scheme=riemann --set physics.interface_viscosity=harmonic
+refuses ivisc-riemann 'physics\.interface_viscosity: none is not available with scheme riemann' -- \
+  run ivisc-riemann --set scheme=riemann --set physics.interface_viscosity=none
 refuses ivisc-spc 'physics\.interface_viscosity: only none with scheme same-phase-continuity' -- \
   run ivisc-spc --set scheme=same-phase-continuity --set physics.interface_viscosity=harmonic
 refuses ivisc-gd 'physics\.interface_viscosity: none is not available with scheme generalized-dissipation' -- \
