@@ -220,7 +220,8 @@ SW_RUNGS = [rung(0.05, 1, True), rung(0.025, 2, True), rung(0.0125, 2, True), ru
             rung(0.025, 2, label="delta-plus, water-air, density-weighted interface pressure",
                  case="standing-wave", **WEIGHTED),
             rung(0.05, 2, True, label=SPC, case="standing-wave", **SW_SPC),
-            rung(0.025, 2, label=SPC, case="standing-wave", **SW_SPC)]
+            rung(0.025, 2, label=SPC, case="standing-wave", **SW_SPC),
+            rung(0.0125, 2, label=SPC, case="standing-wave", **SW_SPC)]   # paper 003 Table 1's coarsest L/dx
 STUDIES += [
     {
         "id": "standing-wave-period",
