@@ -129,7 +129,7 @@ STUDIES = [
         "error": "max centreline |p - p_exact| / (rho g H), last snapshot (the threshold of the two-phase tank)",
         "threshold": 0.02,
         "metric": metrics.hydrostatic_1phase,
-        "rungs": [rung(0.04, 1, True), rung(0.02, 2, True), rung(0.01, 2)],
+        "rungs": [rung(0.04, 1, True), rung(0.02, 2), rung(0.01, 2)],   # dx 0.02 (15 027 steps) left out of QUICK for its time
         "plot": "hydrostatic_1phase",
     },
     drop_study("oscillating-drop", "Oscillating drop, one fluid (paper 001 section III.B)", 1.0,
