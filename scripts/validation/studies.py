@@ -171,6 +171,7 @@ STUDIES = [
                   rung(0.024, 2, label=POSITION_ONLY, **IMPACT_RUN, **{"physics.shifting": "position"}),
                   rung(0.048, 2, label=WEIGHTED_LABEL, **DB2_COARSE, **IMPACT_RUN, **WEIGHTED),
                   rung(0.024, 2, label=WEIGHTED_LABEL, **IMPACT_RUN, **WEIGHTED),
+                  rung(0.024, 2, label="delta-plus, alpha = 0.02", **IMPACT_RUN, **{"physics.artificial_viscosity": 0.02}),
                   # riemann re-initialises the density by summation, so the water top (0.6 m) must lie
                   # on the lattice: dx = 0.048 puts the first air row dx/2 above the last water row
                   rung(0.04, 2, True, label="riemann", **DB2_COARSE, **IMPACT_RUN, **RIEMANN_DB2),
