@@ -79,7 +79,7 @@ static inline __attribute__((always_inline)) void riemann_sums(const struct engi
     const double fv = kernel_f(&e->kern, r2) * (wall ? e->vol0 : vol[j]), r = sqrt(r2), zj = rhoj * cj;
     if (MOMENTUM) {
       double pstar = riemann_pressure(ci->z, ci->p, zj, pj, -vdx / r, (ci->z + zj) / (ci->rho + rhoj));
-      double eta = ci->eta + etaj > 0 ? 2.0 * ci->eta * etaj / (ci->eta + etaj) : 0.0;
+      double eta = harmonic_mean(ci->eta, etaj);
       for (int d = 0; d < dim; d++) {
         gp[d] += pstar * fv * dx[d];
         vs[d] += eta * fv * (ci->v[d] - vj[d]);
