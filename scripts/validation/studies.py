@@ -49,6 +49,8 @@ HYDRO_DOMAIN = {"domain.min": "[-0.5,-0.5]", "domain.max": "[1.5,2.5]"}   # room
 HYDRO_LONG = "delta-plus, t sqrt(g/Hw) = 40"
 WEIGHTED = {"physics.interface_pressure": "density-weighted"}
 WEIGHTED_LABEL = "delta-plus, density-weighted interface pressure"
+ALPHA_002 = {"physics.artificial_viscosity": 0.02}   # paper 000's sensitivity value of alpha
+ALPHA_002_LABEL = "delta-plus, alpha = 0.02"
 DELTA_SPH = {"scheme": "delta-sph", "physics.shifting": "none"}
 # paper 001 runs its hydrostatic tank with p_b = 0.1 p_max (notes section 2.4), p_max = rho_w g Hw
 DELTA_SPH_HYDRO = {**DELTA_SPH, "phases.0.p_background": 981, "phases.1.p_background": 981}
@@ -160,8 +162,8 @@ STUDIES = [
     impact_study("dambreak-impact", "dambreak-1phase",
                  "Dam break, first impact at the right-wall sensor P1 (Buchner 2002)",
                  [rung(dx, n, q, **IMPACT_RUN) for dx, n, q in ((0.024, 1, True), (0.012, 2, False), (0.006, 2, False))] +
-                 # paper 000's sensitivity value of alpha: its viscosity alpha h c0 / 8 slows the front less
-                 [rung(dx, n, q, label="delta-plus, alpha = 0.02", **IMPACT_RUN, **{"physics.artificial_viscosity": 0.02})
+                 # its viscosity alpha h c0 / 8 slows the front less
+                 [rung(dx, n, q, label=ALPHA_002_LABEL, **IMPACT_RUN, **ALPHA_002)
                   for dx, n, q in ((0.024, 1, True), (0.012, 2, False), (0.006, 2, False))]),
     impact_study("dambreak-2phase", "dambreak-2phase",
                  "Two-phase dam break, first impact at P1 (Buchner 2002), consistent and position-only shifting",
@@ -171,7 +173,7 @@ STUDIES = [
                   rung(0.024, 2, label=POSITION_ONLY, **IMPACT_RUN, **{"physics.shifting": "position"}),
                   rung(0.048, 2, label=WEIGHTED_LABEL, **DB2_COARSE, **IMPACT_RUN, **WEIGHTED),
                   rung(0.024, 2, label=WEIGHTED_LABEL, **IMPACT_RUN, **WEIGHTED),
-                  rung(0.024, 2, label="delta-plus, alpha = 0.02", **IMPACT_RUN, **{"physics.artificial_viscosity": 0.02}),
+                  rung(0.024, 2, label=ALPHA_002_LABEL, **IMPACT_RUN, **ALPHA_002),
                   # riemann re-initialises the density by summation, so the water top (0.6 m) must lie
                   # on the lattice: dx = 0.048 puts the first air row dx/2 above the last water row
                   rung(0.04, 2, True, label="riemann", **DB2_COARSE, **IMPACT_RUN, **RIEMANN_DB2),
