@@ -25,6 +25,14 @@ static inline void body_acceleration(const struct engine *e, long i, double *f) 
  *  (Hu & Adams 2006); 0 when either is 0. */
 static inline double harmonic_mean(double a, double b) { return a + b > 0 ? 2.0 * a * b / (a + b) : 0.0; }
 
+/** Dynamic viscosity of phase ph in the pair viscous terms of schemes same-phase-continuity and
+ *  generalized-dissipation: the phase's own plus the artificial viscosity
+ *  alpha h c0 rho0 / (2 (dim + 2)) [Pa s]. */
+static inline double phase_viscosity_total(const struct engine *e, int ph) {
+  const struct phase *f = &e->c->phases[ph];
+  return f->viscosity + e->c->alpha * e->h * f->c0 * f->rho0 / (2.0 * (e->p.dim + 2));
+}
+
 /** Work on owned particle i with its neighbour list (empty for wall ghosts). */
 typedef void (*particle_fn)(struct engine *e, long i, const struct neighbours *nb);
 
@@ -164,10 +172,6 @@ void pass_gd_gradients(struct engine *e);
  *  physics.dissipation_form) and momentum with Grenier's pressure gradient, the Hu-Adams
  *  viscosity and the body forces (Eqs. 9, 10) of owned fluid. */
 void pass_gd_rhs(struct engine *e);
-
-/** Dynamic viscosity of phase ph in scheme generalized-dissipation: the phase's own plus the
- *  artificial viscosity alpha h c0 rho0 / (2 (dim + 2)) [Pa s]. */
-double gd_viscosity(const struct engine *e, int ph);
 
 /** The time step of paper 004 Eq. 23 [s]: cfl h / (c_max + u_max) (u_max the largest advection
  *  speed [m/s]; the paper's cfl is 0.25), 0.25 (h/a)^1/2 with a the larger of |g| and a_max

@@ -822,8 +822,9 @@ static int read_physics(const struct map *root, struct case_def *c) {
   int shifting, tic, fs, form, limit, iface_p, iface_visc, spc_model, diss;
   int plus = c->scheme == SCHEME_DELTA_PLUS;   /* the others: no shifting, TIC or damper (papers 001-004) */
   int gd = c->scheme == SCHEME_GENERALIZED_DISSIPATION;   /* paper 004: delta 0.5, physical viscosity only */
-  int coupled = gd || c->scheme == SCHEME_RIEMANN;   /* viscosity harmonic across the phases (004 Eq. 10, 002 Eqs. 6-9) */
   int spc = c->scheme == SCHEME_SAME_PHASE_CONTINUITY;     /* paper 003: alpha_w = 0.05 */
+  /* viscosity harmonic across the phases (004 Eq. 10, 002 Eqs. 6-9, 003 Eq. 21) */
+  int coupled = gd || spc || c->scheme == SCHEME_RIEMANN;
   double mode;
   if (sub(root, "physics", PHYSICS_KEYS, &ph) ||
       num(&ph, "delta", &R_NONNEGATIVE, gd ? 0.5 : 0.1, &c->delta) ||

@@ -54,20 +54,6 @@ static int parse_args(int argc, char **argv, struct args *a, char *err, size_t l
   return 0;
 }
 
-/* Scheme same-phase-continuity has its own pair pass (paper 003): the delta-plus terms are not in
- * it, so a case asking for one is refused rather than run without it. */
-static int same_phase_terms(const struct case_def *c, char *err, size_t len) {
-  const char *key = c->shifting != SHIFTING_NONE ? "physics.shifting: only none"
-                    : c->tensile_control ? "physics.tensile_control: only false"
-                    : c->acoustic_damper > 0 ? "physics.acoustic_damper: only 0"
-                    : c->interface_sharpness > 0 ? "physics.interface_sharpness: only 0"
-                    : c->interface_pressure != IFACE_P_SUM ? "physics.interface_pressure: only sum"
-                    : c->interface_viscosity != IFACE_VISC_NONE ? "physics.interface_viscosity: only none" : NULL;
-  if (!key) return 0;
-  snprintf(err, len, "%s: %s with scheme same-phase-continuity (paper 003 has no such term)", c->source_file, key);
-  return 1;
-}
-
 /* Schemes whose viscosity always couples the phases with the harmonic mean (interface_viscosity
  * harmonic, their default) refuse none; why names the scheme's equation. Returns 0 or 1. */
 static int coupled_viscosity_refused(const struct case_def *c, const char *scheme, const char *why, char *err,
@@ -75,6 +61,22 @@ static int coupled_viscosity_refused(const struct case_def *c, const char *schem
   if (c->interface_viscosity != IFACE_VISC_NONE) return 0;
   return snprintf(err, len, "%s: physics.interface_viscosity: none is not available with scheme %s "
                   "(its viscosity, %s, always couples the phases: harmonic)", c->source_file, scheme, why), 1;
+}
+
+/* Scheme same-phase-continuity has its own pair pass (paper 003): the delta-plus terms are not in
+ * it, so a case asking for one is refused rather than run without it. Its viscosity always couples
+ * the phases (interface_viscosity harmonic, its default): refuse none. */
+static int same_phase_terms(const struct case_def *c, char *err, size_t len) {
+  const char *key = c->shifting != SHIFTING_NONE ? "physics.shifting: only none"
+                    : c->tensile_control ? "physics.tensile_control: only false"
+                    : c->acoustic_damper > 0 ? "physics.acoustic_damper: only 0"
+                    : c->interface_sharpness > 0 ? "physics.interface_sharpness: only 0"
+                    : c->interface_pressure != IFACE_P_SUM ? "physics.interface_pressure: only sum" : NULL;
+  if (coupled_viscosity_refused(c, "same-phase-continuity", "paper 003 Eq. 21 with the harmonic mean", err, len))
+    return 1;
+  if (!key) return 0;
+  snprintf(err, len, "%s: %s with scheme same-phase-continuity (paper 003 has no such term)", c->source_file, key);
+  return 1;
 }
 
 /* Scheme generalized-dissipation (paper 004) has none of paper 000's shifting, tensile control,

@@ -22,12 +22,6 @@
 
 #define GD_MIN_DET 0.1   /* det of L^-1 below which the gradient correction is dropped */
 
-/* Dynamic viscosity of phase ph with the artificial part [Pa s]. */
-double gd_viscosity(const struct engine *e, int ph) {
-  const struct phase *f = &e->c->phases[ph];
-  return f->viscosity + e->c->alpha * e->h * f->c0 * f->rho0 / (2.0 * (e->p.dim + 2));
-}
-
 /* The sound speed of pair (i, j): the larger c0 of the two phases, c0_i beside a ghost [m/s]. */
 static double pair_sound_speed(const struct engine *e, int phi, int phj) {
   double ci = e->c->phases[phi].c0;
@@ -91,7 +85,7 @@ static void gd_rhs(struct engine *e, long i, const struct neighbours *nb) {
   const double *restrict vol = e->w.vol, *restrict pres = p->p, *restrict gam = e->w.gd_gamma;
   const int dim = p->dim, ph = p->phase[i];
   double mu[CASE_MAX_PHASES];   /* mu of each phase, walls taking the phase of i */
-  for (int k = 0; k < e->c->n_phases; k++) mu[k] = gd_viscosity(e, k);
+  for (int k = 0; k < e->c->n_phases; k++) mu[k] = phase_viscosity_total(e, k);
   const double eta2 = 0.01 * e->h * e->h, mui = mu[ph], pgi = pres[i] / gam[i];
   double div = 0, diss = 0, force[3] = {0, 0, 0}, g[3];
   struct neighbours it = *nb;
@@ -133,7 +127,7 @@ double gd_time_step(const struct engine *e, double a_max, double u_max, const ch
   double a = fmax(sqrt(g), a_max);
   if (a > 0) lower(&dt, limit, 0.25 * sqrt(e->h / a), "acceleration");
   for (int ph = 0; ph < c->n_phases; ph++) {
-    double mu = gd_viscosity(e, ph);
+    double mu = phase_viscosity_total(e, ph);
     if (mu > 0) lower(&dt, limit, 0.125 * c->phases[ph].rho0 * e->h * e->h / mu, "viscous");
   }
   if (e->features & FEAT_SURFACE_TENSION)   /* twice the limit of paper 000's RK4 step (the exact 0.5 (...)^1/2) */

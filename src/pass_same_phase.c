@@ -47,12 +47,6 @@ struct spc_sums {
   double div, diff, grad_p[3], visc[3], repulsion[3];
 };
 
-/* Dynamic viscosity of phase k for the pair term: alpha h c0 rho0 / (2(d+2)) + viscosity [Pa s]. */
-static double phase_mu(const struct engine *e, int k) {
-  const struct phase *f = &e->c->phases[k];
-  return e->c->alpha * e->h * f->c0 * f->rho0 / (2.0 * (e->p.dim + 2)) + f->viscosity;
-}
-
 void spc_wall_repulsion(const struct engine *e, long i, long b, double *acc) {
   const struct parts *p = &e->p;
   const int dim = p->dim;
@@ -87,7 +81,7 @@ static void spc_sums(const struct engine *e, long i, const struct neighbours *nb
   double mu[CASE_MAX_PHASES];
   int heavier[CASE_MAX_PHASES];   /* phases whose velocities i's divergence reads besides its own */
   for (int k = 0; k < e->c->n_phases; k++) {
-    mu[k] = phase_mu(e, k);
+    mu[k] = phase_viscosity_total(e, k);
     heavier[k] = e->c->phases[k].rho0 > fi->rho0;
   }
   *s = (struct spc_sums){0};

@@ -73,8 +73,8 @@ refuses dissvalue 'physics\.dissipation_form: got .literal., allowed values: con
   run dissvalue --set physics.dissipation_form=literal
 refuses ivisc-riemann 'physics\.interface_viscosity: none is not available with scheme riemann' -- \
   run ivisc-riemann --set scheme=riemann --set physics.interface_viscosity=none
-refuses ivisc-spc 'physics\.interface_viscosity: only none with scheme same-phase-continuity' -- \
-  run ivisc-spc --set scheme=same-phase-continuity --set physics.interface_viscosity=harmonic
+refuses ivisc-spc 'physics\.interface_viscosity: none is not available with scheme same-phase-continuity' -- \
+  run ivisc-spc --set scheme=same-phase-continuity --set physics.interface_viscosity=none
 refuses ivisc-gd 'physics\.interface_viscosity: none is not available with scheme generalized-dissipation' -- \
   run ivisc-gd --set scheme=generalized-dissipation --set physics.interface_viscosity=none
 refuses ivisc-value 'physics\.interface_viscosity: got .arithmetic., allowed values: none, harmonic' -- \
