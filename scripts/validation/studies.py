@@ -282,7 +282,10 @@ STUDIES.append({
     "rungs": [rung(0.025, 2, True), rung(0.0125, 2),
               rung(0.025, 2, True, label="generalized-dissipation", **GD),
               rung(0.025, 2, label="delta-sph", **DELTA_SPH), rung(0.025, 2, label="riemann", **RIEMANN),
-              rung(0.025, 2, label=SPC, **SPC_CASE_PHASES)],
+              rung(0.025, 2, label=SPC, **SPC_CASE_PHASES),
+              # paper 003's conventional model (its negative control): continuity over every neighbour
+              rung(0.025, 2, label=SPC + ", conventional model", **SPC_CASE_PHASES,
+                   **{"physics.spc_model": "conventional"})],
     "plot": "bubble",
 })
 
