@@ -3,8 +3,8 @@
 air's mean gauge pressure in units of rho_w g H (paper 000 section 3.2: it drifts when the phases'
 volumes are not conserved, as with position-only shifting), the enclosed pockets and stray air
 particles (regions of air particles connected on a dx grid, scripts/validation/metrics.py), the
-largest pocket's volume and pressure; then each phase's volume drift (stats.csv) and the first
-impact at p1 against Buchner 2002.
+largest pocket's volume and pressure; then each phase's volume drift (stats.csv), the first
+impact at p1 against Buchner 2002 and the period of the first closed pocket from p1.
 
 usage: dambreak_air.py RUN_DIR DX [--every N]
 """
@@ -15,6 +15,7 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from validation import metrics  # noqa: E402
 
+POCKET_PERIOD = 0.0561   # [s] the regression value of study dambreak-pocket (cases/dambreak-2phase/README.md)
 REFERENCE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "cases", "dambreak-2phase", "reference",
                          "dambreak_pressure_buchner2002_P1_P2_digitized_trixiparticles.csv")
 
@@ -34,6 +35,8 @@ def main():
     print("max |open-air p|/(rho g H): %.4f; %s" % (abs(series["open_air_p"]).max(), metrics.volume_drift_text(drift)))
     err, notes, _ = metrics.dambreak_impact(a.run, a.dx, REFERENCE)
     print("first impact at p1: error %.4f; %s" % (err, notes))
+    err, notes, _ = metrics.dambreak_pocket_period(a.run, a.dx, POCKET_PERIOD)
+    print("air pocket: period error %.4f against the regression value; %s" % (err, notes))
 
 
 if __name__ == "__main__":

@@ -265,6 +265,57 @@ def dambreak_air_series(run, dx, h=0.6, min_pocket=10):
     return {k: np.array(v) for k, v in out.items()}
 
 
+def closed_pocket_window(series):
+    """First and last time [s] of the first unbroken run of snapshots with an enclosed air pocket
+    in a dambreak_air_series, and the snapshots' indices; None when no snapshot has one."""
+    k0 = int(np.argmax(series["pockets"] > 0))
+    if series["pockets"][k0] == 0:
+        return None
+    k1 = k0
+    while k1 + 1 < len(series["t"]) and series["pockets"][k1 + 1] > 0:
+        k1 += 1
+    return series["t"][k0], series["t"][k1], slice(k0, k1 + 1)
+
+
+def band_spectrum(t, p, band, pad=16):
+    """Amplitude spectrum of p(t) (uniformly sampled) less its quadratic trend, Hann-windowed and
+    zero-padded pad times: frequencies [Hz] and amplitudes within band = (f_lo, f_hi), and the
+    standard deviation [Pa] of p band-passed to it."""
+    detrended = p - np.polyval(np.polyfit(t, p, 2), t)
+    dt = float(np.median(np.diff(t)))
+    f = np.fft.rfftfreq(pad * len(t), dt)
+    amp = np.abs(np.fft.rfft(detrended * np.hanning(len(t)), pad * len(t)))
+    coarse_f, coarse = np.fft.rfftfreq(len(t), dt), np.fft.rfft(detrended)
+    coarse[(coarse_f < band[0]) | (coarse_f > band[1])] = 0
+    inside = (f >= band[0]) & (f <= band[1])
+    return f[inside], amp[inside], float(np.fft.irfft(coarse, len(t)).std())
+
+
+def dambreak_pocket_period(run, dx, period_ref, band=(5.0, 40.0)):
+    """|T / period_ref - 1| of the air pocket's oscillation in a two-phase dam break: T = 1/f, f the
+    spectral peak of probe p1 within band [Hz] while the first enclosed pocket lasts (snapshots of
+    dambreak_air_series). Inf when no pocket closes. Notes: the pocket's life and volume, and the
+    band-passed p1 against the same length of time before it closes."""
+    series = dambreak_air_series(run, dx)
+    window = closed_pocket_window(series)
+    if window is None:
+        return math.inf, "no enclosed air pocket in %d snapshots" % len(series["t"]), {}
+    t_close, t_open, snaps = window
+    pr = read_csv(os.path.join(run, "probes.csv"))
+    during = (pr["time"] >= t_close) & (pr["time"] <= t_open)
+    before = (pr["time"] >= 2 * t_close - t_open) & (pr["time"] < t_close)
+    f, amp, std_during = band_spectrum(pr["time"][during], pr["p1"][during], band)
+    std_before = band_spectrum(pr["time"][before], pr["p1"][before], band)[2]
+    period = 1.0 / f[np.argmax(amp)]
+    notes = ("pocket closed from t = %.2f to %.2f s, %.4f m^3/m; p1 peak at %.1f Hz (%g-%g Hz): T = %.4f s vs "
+             "%.4f s; p1 in that band: std %.0f Pa, %.0f Pa before the closure") % (
+        t_close, t_open, np.mean(series["pocket_volume"][snaps]), 1.0 / period, band[0], band[1], period,
+        period_ref, std_during, std_before)
+    return abs(period / period_ref - 1.0), notes, {"f": f, "amp": amp / amp.max(),
+                                                   "f_ref": np.array([1.0, 1.0]) / period_ref,
+                                                   "amp_ref": np.array([0.0, 1.0])}
+
+
 # --- Rayleigh-Taylor (He, Chen and Zhang 1999 set-up) ----------------------------------------
 
 def rt_linear_rate(atwood, g, k, nu):

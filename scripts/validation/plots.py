@@ -61,6 +61,12 @@ def impact(ax, items):
     ax.set_ylabel("p* = p / (rho g H)")
 
 
+def pocket(ax, items):
+    """Amplitude spectrum of p1 while the air pocket is closed, with the regression period."""
+    _runs_and_reference(ax, items, ("f", "amp"), ("f_ref", "amp_ref"), "-", "k--", "regression value",
+                        axes=("f [Hz]", "p1 amplitude / its peak"))
+
+
 def rt_growth(ax, items):
     """Mode amplitude a(t) of each run with its fit, and the linear theory's growth from the finest
     run's initial rate, a'(0) sinh(sigma_nu t) / sigma_nu."""

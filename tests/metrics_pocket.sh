@@ -1,0 +1,5 @@
+#!/usr/bin/env bash
+# The air-pocket period metric of the validation (scripts/validation/metrics.py) on analytic input.
+set -eu
+cd "$(dirname "$0")/.."
+"${PYTHON:-/usr/bin/python3}" tests/check_pocket_spectrum.py
