@@ -265,14 +265,17 @@ def dambreak_air_series(run, dx, h=0.6, min_pocket=10):
     return {k: np.array(v) for k, v in out.items()}
 
 
-def closed_pocket_window(series):
-    """First and last time [s] of the first unbroken run of snapshots with an enclosed air pocket
-    in a dambreak_air_series, and the snapshots' indices; None when no snapshot has one."""
+def closed_pocket_window(series, min_fraction=0.8):
+    """First and last time [s] of the first unbroken run of snapshots of a dambreak_air_series in
+    which the pocket that closed first is intact (an enclosed pocket whose volume is at least
+    min_fraction of its volume at the closure: when it breaks up, the largest fragment is smaller),
+    and the snapshots' indices; None when no snapshot has a pocket."""
     k0 = int(np.argmax(series["pockets"] > 0))
     if series["pockets"][k0] == 0:
         return None
+    intact = (series["pockets"] > 0) & (series["pocket_volume"] >= min_fraction * series["pocket_volume"][k0])
     k1 = k0
-    while k1 + 1 < len(series["t"]) and series["pockets"][k1 + 1] > 0:
+    while k1 + 1 < len(series["t"]) and intact[k1 + 1]:
         k1 += 1
     return series["t"][k0], series["t"][k1], slice(k0, k1 + 1)
 
@@ -291,10 +294,12 @@ def band_spectrum(t, p, band, pad=16):
     return f[inside], amp[inside], float(np.fft.irfft(coarse, len(t)).std())
 
 
-def dambreak_pocket_period(run, dx, period_ref, band=(5.0, 40.0)):
+def dambreak_pocket_period(run, dx, period_ref, band=(10.0, 40.0)):
     """|T / period_ref - 1| of the air pocket's oscillation in a two-phase dam break: T = 1/f, f the
-    spectral peak of probe p1 within band [Hz] while the first enclosed pocket lasts (snapshots of
-    dambreak_air_series). Inf when no pocket closes. Notes: the pocket's life and volume, and the
+    spectral peak of probe p1 within band [Hz] while the first enclosed pocket is intact (snapshots
+    of dambreak_air_series, closed_pocket_window). The default band holds the 2D gas-cylinder
+    estimate of 17-23 Hz (cases/dambreak-2phase/README.md) and at least 4.6 periods of the 0.46 s
+    the pocket lasts at H/dx = 25. Inf when no pocket closes. Notes: the pocket's life and volume, and the
     band-passed p1 against the same length of time before it closes."""
     series = dambreak_air_series(run, dx)
     window = closed_pocket_window(series)

@@ -189,12 +189,13 @@ STUDIES = [
         "title": "Two-phase dam break, the oscillation of the air pocket that the plunging jet closes "
                  "(a regression value: the experiment shows none)",
         "length": ("H", 0.6),
-        "reference": "regression value 0.0561 s: this code's own period at H/dx = 25 with alpha = 0.02, from "
-                     "a run restarted at t = 0.8 s (commit ebf43bd, 2026-11-24); Buchner's p1 shows no pocket "
-                     "oscillation, which paper 000 attributes to 3D effects",
-        "error": "|T_SPH / T_reg - 1|, T_SPH = 1/f of the spectral peak of p1 in 5-40 Hz while the pocket is closed",
+        "reference": "regression value 0.0578 s: this rung's own period, first measured with commit 976dac0 "
+                     "(2026-11-24); Buchner's p1 shows no pocket oscillation, which paper 000 attributes to 3D "
+                     "effects",
+        "error": "|T_SPH / T_reg - 1|, T_SPH = 1/f of the spectral peak of p1 in 10-40 Hz while the first "
+                 "pocket is intact",
         "threshold": 0.10,
-        "metric": functools.partial(metrics.dambreak_pocket_period, period_ref=0.0561),
+        "metric": functools.partial(metrics.dambreak_pocket_period, period_ref=0.0578),
         "rungs": [rung(0.024, 2, label=ALPHA_002_LABEL, **ALPHA_002, **{"time.end": 2.0, "output.interval": 0.02})],
         "plot": "pocket",
     },
