@@ -126,7 +126,7 @@ bench: deps
 	@$(MAKE) --no-print-directory build/mpsph $(BENCH_TOOLS)
 	@$(PYTHON) scripts/bench.py $(if $(BENCH_QUICK),--quick)
 
-# The validation ladder and doc/validation/README.md; QUICK=1: the cheap rungs only (~20 min on
+# The validation ladder and doc/validation/README.md; QUICK=1: the cheap rungs only (~19 min on
 # 2 cores). Runs go to runs/validate/; VALIDATE_ARGS passes e.g. --only STUDY or --reuse.
 validate: deps
 	@$(MAKE) --no-print-directory build/mpsph
