@@ -187,8 +187,7 @@ STUDIES = [
     {
         "id": "dambreak-pocket",
         "case": "dambreak-2phase",
-        "title": "Two-phase dam break, the oscillation of the air pocket that the plunging jet closes "
-                 "(a regression value: the experiment shows none)",
+        "title": "Two-phase dam break, oscillation of the air pocket (regression value)",
         "length": ("H", 0.6),
         "reference": "regression value 0.0578 s: this rung's own period, first measured with commit 976dac0 "
                      "(2026-11-24); Buchner's p1 shows no pocket oscillation, which paper 000 attributes to 3D "
