@@ -15,7 +15,6 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from validation import metrics  # noqa: E402
 
-POCKET_PERIOD = 0.0578   # [s] the regression value of study dambreak-pocket (cases/dambreak-2phase/README.md)
 REFERENCE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "cases", "dambreak-2phase", "reference",
                          "dambreak_pressure_buchner2002_P1_P2_digitized_trixiparticles.csv")
 
@@ -35,7 +34,8 @@ def main():
     print("max |open-air p|/(rho g H): %.4f; %s" % (abs(series["open_air_p"]).max(), metrics.volume_drift_text(drift)))
     err, notes, _ = metrics.dambreak_impact(a.run, a.dx, REFERENCE)
     print("first impact at p1: error %.4f; %s" % (err, notes))
-    err, notes, _ = metrics.dambreak_pocket_period(a.run, a.dx, POCKET_PERIOD)
+    err, notes, _ = metrics.pocket_period(series, metrics.read_csv(os.path.join(a.run, "probes.csv")),
+                                          metrics.POCKET_PERIOD_REF)
     print("air pocket: period error %.4f against the regression value; %s" % (err, notes))
 
 

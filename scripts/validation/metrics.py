@@ -294,31 +294,39 @@ def band_spectrum(t, p, band, pad=16):
     return f[inside], amp[inside], float(np.fft.irfft(coarse, len(t)).std())
 
 
-def dambreak_pocket_period(run, dx, period_ref, band=(10.0, 40.0)):
+POCKET_PERIOD_REF = 0.0578   # [s] the regression value of study dambreak-pocket (cases/dambreak-2phase/README.md)
+
+
+def pocket_period(series, probes, period_ref, band=(10.0, 40.0)):
     """|T / period_ref - 1| of the air pocket's oscillation in a two-phase dam break: T = 1/f, f the
-    spectral peak of probe p1 within band [Hz] while the first enclosed pocket is intact (snapshots
-    of dambreak_air_series, closed_pocket_window). The default band holds the 2D gas-cylinder
-    estimate of 17-23 Hz (cases/dambreak-2phase/README.md) and at least 4.6 periods of the 0.46 s
-    the pocket lasts at H/dx = 25. Inf when no pocket closes. Notes: the pocket's life and volume, and the
-    band-passed p1 against the same length of time before it closes."""
-    series = dambreak_air_series(run, dx)
+    spectral peak of probe p1 (probes: probes.csv as read by read_csv) within band [Hz] while the
+    first enclosed pocket of series (a dambreak_air_series) is intact (closed_pocket_window). The
+    default band holds the 2D gas-cylinder estimate of 17-23 Hz (cases/dambreak-2phase/README.md)
+    and at least 4.6 periods of the 0.46 s the pocket lasts at H/dx = 25. Inf when no pocket
+    closes. Notes: the pocket's life and volume, and the band-passed p1 against the same length of
+    time before it closes."""
     window = closed_pocket_window(series)
     if window is None:
         return math.inf, "no enclosed air pocket in %d snapshots" % len(series["t"]), {}
     t_close, t_open, snaps = window
-    pr = read_csv(os.path.join(run, "probes.csv"))
-    during = (pr["time"] >= t_close) & (pr["time"] <= t_open)
-    before = (pr["time"] >= 2 * t_close - t_open) & (pr["time"] < t_close)
-    f, amp, std_during = band_spectrum(pr["time"][during], pr["p1"][during], band)
-    std_before = band_spectrum(pr["time"][before], pr["p1"][before], band)[2]
-    period = 1.0 / f[np.argmax(amp)]
+    during = (probes["time"] >= t_close) & (probes["time"] <= t_open)
+    before = (probes["time"] >= 2 * t_close - t_open) & (probes["time"] < t_close)
+    f, amp, std_during = band_spectrum(probes["time"][during], probes["p1"][during], band)
+    std_before = band_spectrum(probes["time"][before], probes["p1"][before], band)[2]
+    f_peak = f[np.argmax(amp)]
+    period = 1.0 / f_peak
     notes = ("pocket closed from t = %.2f to %.2f s, %.4f m^3/m; p1 peak at %.1f Hz (%g-%g Hz): T = %.4f s vs "
              "%.4f s; p1 in that band: std %.0f Pa, %.0f Pa before the closure") % (
-        t_close, t_open, np.mean(series["pocket_volume"][snaps]), 1.0 / period, band[0], band[1], period,
+        t_close, t_open, np.mean(series["pocket_volume"][snaps]), f_peak, band[0], band[1], period,
         period_ref, std_during, std_before)
     return abs(period / period_ref - 1.0), notes, {"f": f, "amp": amp / amp.max(),
                                                    "f_ref": np.array([1.0, 1.0]) / period_ref,
                                                    "amp_ref": np.array([0.0, 1.0])}
+
+
+def dambreak_pocket_period(run, dx, period_ref=POCKET_PERIOD_REF):
+    """pocket_period of a run's snapshots (dambreak_air_series with dx [m]) and probes.csv."""
+    return pocket_period(dambreak_air_series(run, dx), read_csv(os.path.join(run, "probes.csv")), period_ref)
 
 
 # --- Rayleigh-Taylor (He, Chen and Zhang 1999 set-up) ----------------------------------------

@@ -189,13 +189,13 @@ STUDIES = [
         "case": "dambreak-2phase",
         "title": "Two-phase dam break, oscillation of the air pocket (regression value)",
         "length": ("H", 0.6),
-        "reference": "regression value 0.0578 s: this rung's own period, first measured with commit 976dac0 "
+        "reference": "regression value %g s: this rung's own period, first measured with commit 976dac0 "
                      "(2026-11-24); Buchner's p1 shows no pocket oscillation, which paper 000 attributes to 3D "
-                     "effects",
+                     "effects" % metrics.POCKET_PERIOD_REF,
         "error": "|T_SPH / T_reg - 1|, T_SPH = 1/f of the spectral peak of p1 in 10-40 Hz while the first "
                  "pocket is intact",
         "threshold": 0.10,
-        "metric": functools.partial(metrics.dambreak_pocket_period, period_ref=0.0578),
+        "metric": metrics.dambreak_pocket_period,
         "rungs": [rung(0.024, 2, label=ALPHA_002_LABEL, **ALPHA_002, **{"time.end": 2.0, "output.interval": 0.02})],
         "plot": "pocket",
     },
