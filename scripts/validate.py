@@ -8,7 +8,8 @@ measured by this run (or read back from runs of an earlier invocation with --reu
 Usage: scripts/validate.py [--quick] [--only ID[,ID]] [--reuse] [--runs DIR] [--report DIR]
   --quick   the cheap rungs only (make validate QUICK=1, about 20 min on 2 cores)
   --coarsest  the first rung of each study only (the smoke test of make test)
-  --reuse   keep runs that finished in an earlier invocation (their recorded wall time is used)
+  --reuse   keep runs that finished in an earlier invocation with the same command line (their
+            recorded wall time is used); a rung whose settings changed since is run again
   --list    print the rungs with their commands and exit
   --rung K  run only the K-th rung of the selection (0-based, as --list orders them), no report:
             for job arrays; a later --reuse invocation writes the report from the runs
@@ -54,18 +55,34 @@ def command(study, r, out):
     return cmd
 
 
+def finished_run(study, r, out):
+    """The record of a finished earlier run of rung r in out, or None when there is none or it ran
+    another command line (the study's settings changed since)."""
+    record_path = os.path.join(out, "validate.json")
+    if not os.path.exists(record_path):
+        return None
+    with open(record_path) as f:
+        rec = json.load(f)
+    if rec["command"] != " ".join(command(study, r, out)):
+        print("validate: %s ran with other settings than the study's now; not reused" % out, flush=True)
+        return None
+    return rec
+
+
 def run_rung(study, r, out, reuse, done=set()):
     """Run one rung (or reuse a run of this invocation, which studies may share, or with reuse a
-    finished earlier run). Returns the run record (status, steps, particles, wall time [s])."""
+    finished earlier run with the same command line). Returns the run record (status, steps,
+    particles, wall time [s])."""
     record_path = os.path.join(out, "validate.json")
-    if (reuse or out in done) and os.path.exists(record_path):
-        with open(record_path) as f:
-            return json.load(f)
+    cmd = command(study, r, out)
+    if reuse or out in done:
+        rec = finished_run(study, r, out)
+        if rec:
+            return rec
     os.makedirs(out, exist_ok=True)
     timings = os.path.join(out, "timings.csv")
     if os.path.exists(timings):
         os.remove(timings)   # a run that stops before its summary must not show an older one's
-    cmd = command(study, r, out)
     start = time.time()
     with open(os.path.join(out, "mpsph.log"), "w") as log:
         status = subprocess.call(cmd, stdout=log, stderr=subprocess.STDOUT)
@@ -103,7 +120,7 @@ def run_study(study, args):
     rows = []
     for r in study["rungs"]:
         out = rung_dir(args.runs, study, r)
-        if args.quick and not r["quick"] and not (args.reuse and os.path.exists(os.path.join(out, "validate.json"))):
+        if args.quick and not r["quick"] and not (args.reuse and finished_run(study, r, out)):
             continue   # a fine rung: QUICK runs none, and with --reuse reports those run before
         print("%s: %s dx = %g on %d ranks ..." % (study["id"], r["label"], r["dx"], r["np"]), flush=True)
         rec = run_rung(study, r, out, args.reuse)

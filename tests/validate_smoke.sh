@@ -3,6 +3,8 @@
 # the one-fluid oscillating drop (R/dx = 12.5) and of the standing wave, computes their errors
 # and writes the report. Asserts the report, its CSV and plots exist with a row per study, and
 # the drop's semi-axis within its 2 % threshold of the analytic solution (measured 1.66 % of R).
+# Then --reuse: a finished run is read back (its recorded wall time reported), and a run whose
+# recorded command line is not the study's current one is run again.
 set -eu
 cd "$(dirname "$0")/.."
 PYTHON=${PYTHON:-/usr/bin/python3}
@@ -26,3 +28,29 @@ drop = rows["oscillating-drop"]
 assert drop["verdict"] == "pass" and float(drop["error"]) <= 0.02, drop
 print("drop error %.4f of R, standing-wave period error %.4f" % (float(drop["error"]), float(rows["standing-wave-period"]["error"])))
 PY
+
+# --reuse: the drop's record, given a marker wall time, is read back, not run again
+reuse() {
+  "$PYTHON" scripts/validate.py --coarsest --only oscillating-drop --reuse \
+    --runs "$out/runs" --report "$out/report2" > "$out/reuse.log"
+  "$PYTHON" -c 'import csv, sys; print(next(csv.DictReader(open(sys.argv[1])))["wall_seconds"])' \
+    "$out/report2/results.csv"
+}
+record=$(ls "$out"/runs/oscillating-drop/*/validate.json)
+mark() {
+  "$PYTHON" - "$record" "$1" <<'PY'
+import json, sys
+rec = json.load(open(sys.argv[1]))
+rec["wall"] = 12345.0
+if sys.argv[2] == "stale":
+    rec["command"] += " --set time.end=0"
+json.dump(rec, open(sys.argv[1], "w"))
+PY
+}
+mark same
+[ "$(reuse)" = "12345.00" ] || { echo "FAIL: --reuse ran a finished run again"; exit 1; }
+mark stale
+wall=$(reuse)
+[ "$wall" != "12345.00" ] || { echo "FAIL: --reuse kept a run made with another command line"; exit 1; }
+grep -q "not reused" "$out/reuse.log" || { echo "FAIL: the stale run is not reported"; exit 1; }
+echo "reuse: a finished run read back, a stale one run again (wall $wall s)"
