@@ -77,7 +77,8 @@ def spc_sets(dx, h_over_dx=1.33, alpha=0.05):
             "phases.1.viscosity": round(mu_w / 40 - mu_w / 1000, 6)}
 
 
-GD = {"scheme": "generalized-dissipation", "physics.shifting": "none"}
+# paper 004: delta = 0.5 in all its examples (notes seeds-003-004 B); the case files set delta-plus's 0.1
+GD = {"scheme": "generalized-dissipation", "physics.shifting": "none", "physics.delta": 0.5}
 SPC_CASE_PHASES = {"scheme": SPC, "physics.shifting": "none"}   # paper 003's scheme with the case's phases
 DB2_COARSE = {"domain.min": "[-0.3,-0.3]", "domain.max": "[3.516,2.1]"}    # room for 4 ghost layers at dx = 0.048
 RT_RUNGS = [rung(dx, n, q, **{"time.end": 3.0, "output.interval": 0.05}) for dx, n, q in
@@ -183,7 +184,9 @@ STUDIES = [
                   rung(0.048, 2, True, label=SPC, **DB2_COARSE, **IMPACT_RUN, **spc_sets(0.048)),
                   rung(0.024, 2, label=SPC, **IMPACT_RUN, **spc_sets(0.024)),
                   rung(0.048, 2, True, label="generalized-dissipation", **DB2_COARSE, **IMPACT_RUN, **GD),
-                  rung(0.024, 2, label="generalized-dissipation", **IMPACT_RUN, **GD)]),
+                  rung(0.024, 2, label="generalized-dissipation", **IMPACT_RUN, **GD),
+                  rung(0.048, 2, label="delta-sph", **DB2_COARSE, **IMPACT_RUN, **DELTA_SPH),
+                  rung(0.024, 2, label="delta-sph", **IMPACT_RUN, **DELTA_SPH)]),
     {
         "id": "dambreak-pocket",
         "case": "dambreak-2phase",
