@@ -8,8 +8,9 @@ measured by this run (or read back from runs of an earlier invocation with --reu
 Usage: scripts/validate.py [--quick] [--only ID[,ID]] [--reuse] [--runs DIR] [--report DIR]
   --quick   the cheap rungs only (make validate QUICK=1, about 20 min on 2 cores)
   --coarsest  the first rung of each study only (the smoke test of make test)
-  --reuse   keep runs that finished in an earlier invocation with the same command line (their
-            recorded wall time is used); a rung whose settings changed since is run again
+  --reuse   keep runs that finished in an earlier invocation with the same case file and --set
+            overrides (their recorded wall time is used); a rung whose overrides changed since is
+            run again (not detected: edits inside the case file, a rebuilt binary)
   --list    print the rungs with their commands and exit
   --rung K  run only the K-th rung of the selection (0-based, as --list orders them), no report:
             for job arrays; a later --reuse invocation writes the report from the runs
@@ -55,18 +56,26 @@ def command(study, r, out):
     return cmd
 
 
+def run_arguments(cmd):
+    """The part of an mpsph command line (a list of words) that sets what is computed: from the
+    binary on, without the launcher (mpirun or srun) and without the output folder."""
+    args = cmd[cmd.index("build/mpsph"):]
+    k = args.index("-o")
+    return args[:k] + args[k + 2:]
+
+
 def finished_run(study, r, out):
-    """The record of a finished earlier run of rung r in out, or None when there is none or it ran
-    another command line (the study's settings changed since)."""
+    """(record, stale) of an earlier run of rung r in out: record None when there is none or when
+    it ran other arguments than the study's now (stale True: its case file or --set overrides
+    changed since; edits inside the case file or a rebuilt binary are not detected)."""
     record_path = os.path.join(out, "validate.json")
     if not os.path.exists(record_path):
-        return None
+        return None, False
     with open(record_path) as f:
         rec = json.load(f)
-    if rec["command"] != " ".join(command(study, r, out)):
-        print("validate: %s ran with other settings than the study's now; not reused" % out, flush=True)
-        return None
-    return rec
+    if run_arguments(rec["command"].split()) != run_arguments(command(study, r, out)):
+        return None, True
+    return rec, False
 
 
 def run_rung(study, r, out, reuse, done=set()):
@@ -76,9 +85,11 @@ def run_rung(study, r, out, reuse, done=set()):
     record_path = os.path.join(out, "validate.json")
     cmd = command(study, r, out)
     if reuse or out in done:
-        rec = finished_run(study, r, out)
+        rec, stale = finished_run(study, r, out)
         if rec:
             return rec
+        if stale:
+            print("validate: %s ran with other settings than the study's now; running it again" % out, flush=True)
     os.makedirs(out, exist_ok=True)
     timings = os.path.join(out, "timings.csv")
     if os.path.exists(timings):
@@ -120,8 +131,13 @@ def run_study(study, args):
     rows = []
     for r in study["rungs"]:
         out = rung_dir(args.runs, study, r)
-        if args.quick and not r["quick"] and not (args.reuse and finished_run(study, r, out)):
-            continue   # a fine rung: QUICK runs none, and with --reuse reports those run before
+        if args.quick and not r["quick"]:   # a fine rung: QUICK runs none, and with --reuse reports those run before
+            rec, stale = finished_run(study, r, out) if args.reuse else (None, False)
+            if stale:
+                print("validate: %s ran with other settings than the study's now; left out (a fine rung)" % out,
+                      flush=True)
+            if not rec:
+                continue
         print("%s: %s dx = %g on %d ranks ..." % (study["id"], r["label"], r["dx"], r["np"]), flush=True)
         rec = run_rung(study, r, out, args.reuse)
         err, notes, curves = evaluate(study, r, out, rec)

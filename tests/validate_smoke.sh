@@ -32,9 +32,13 @@ PY
 # --reuse: the drop's record, given a marker wall time, is read back, not run again
 reuse() {
   "$PYTHON" scripts/validate.py --coarsest --only oscillating-drop --reuse \
-    --runs "$out/runs" --report "$out/report2" > "$out/reuse.log"
-  "$PYTHON" -c 'import csv, sys; print(next(csv.DictReader(open(sys.argv[1])))["wall_seconds"])' \
-    "$out/report2/results.csv"
+    --runs "$out/runs" --report "$out/report2" > "$out/reuse.log" || { echo "FAIL: validate --reuse" >&2; return 1; }
+  "$PYTHON" - "$out/report2/results.csv" <<'PY'
+import csv, sys
+row = next(csv.DictReader(open(sys.argv[1])))
+assert row["verdict"] == "pass" and int(row["steps"]) > 0, row
+print(row["wall_seconds"])
+PY
 }
 record=$(ls "$out"/runs/oscillating-drop/*/validate.json)
 mark() {
@@ -44,13 +48,18 @@ rec = json.load(open(sys.argv[1]))
 rec["wall"] = 12345.0
 if sys.argv[2] == "stale":
     rec["command"] += " --set time.end=0"
+elif sys.argv[2] == "launcher":   # another launcher and runs folder: the same run
+    rec["command"] = rec["command"].replace("scripts/mpirun -n 1", "srun -n 1").replace(" -o ", " -o ./")
 json.dump(rec, open(sys.argv[1], "w"))
 PY
 }
 mark same
-[ "$(reuse)" = "12345.00" ] || { echo "FAIL: --reuse ran a finished run again"; exit 1; }
+wall=$(reuse) && [ "$wall" = "12345.00" ] || { echo "FAIL: --reuse ran a finished run again"; exit 1; }
+mark launcher
+wall=$(reuse) && [ "$wall" = "12345.00" ] || { echo "FAIL: --reuse ran again a run made with another launcher"; exit 1; }
 mark stale
-wall=$(reuse)
-[ "$wall" != "12345.00" ] || { echo "FAIL: --reuse kept a run made with another command line"; exit 1; }
-grep -q "not reused" "$out/reuse.log" || { echo "FAIL: the stale run is not reported"; exit 1; }
-echo "reuse: a finished run read back, a stale one run again (wall $wall s)"
+wall=$(reuse) && [ "$wall" != "12345.00" ] || { echo "FAIL: --reuse kept a run made with other settings"; exit 1; }
+grep -q "running it again" "$out/reuse.log" || { echo "FAIL: the stale run is not reported"; exit 1; }
+again=$(reuse) && [ "$again" = "$wall" ] && ! grep -q "running it again" "$out/reuse.log" ||
+  { echo "FAIL: the re-run's record is not read back"; exit 1; }
+echo "reuse: a finished run read back (also with another launcher), a stale one run again (wall $wall s)"
