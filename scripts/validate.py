@@ -73,7 +73,8 @@ def finished_run(study, r, out):
         return None, False
     with open(record_path) as f:
         rec = json.load(f)
-    if run_arguments(rec["command"].split()) != run_arguments(command(study, r, out)):
+    # compared as recorded, a string split at spaces (a --set value may hold one: "[0.3, 0.6]")
+    if run_arguments(rec["command"].split()) != run_arguments(" ".join(command(study, r, out)).split()):
         return None, True
     return rec, False
 
