@@ -81,8 +81,8 @@ def finished_run(study, r, out):
 
 def run_rung(study, r, out, reuse, done=set()):
     """Run one rung (or reuse a run of this invocation, which studies may share, or with reuse a
-    finished earlier run with the same command line). Returns the run record (status, steps,
-    particles, wall time [s])."""
+    finished earlier run with the same case file and overrides, finished_run). Returns the run
+    record (status, steps, particles, wall time [s])."""
     record_path = os.path.join(out, "validate.json")
     cmd = command(study, r, out)
     if reuse or out in done:

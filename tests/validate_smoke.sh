@@ -3,9 +3,10 @@
 # the one-fluid oscillating drop (R/dx = 12.5) and of the standing wave, computes their errors
 # and writes the report. Asserts the report, its CSV and plots exist with a row per study, and
 # the drop's semi-axis within its 2 % threshold of the analytic solution (measured 1.66 % of R).
-# Then --reuse: a finished run is read back (its recorded wall time reported), and a run whose
-# recorded command line is not the study's current one is run again (the dam-break front's rung,
-# whose overrides hold a value with a space, is read back).
+# Then --reuse: a finished run is read back (its recorded wall time reported), also when it ran
+# with another launcher, and a run whose recorded case file and overrides are not the study's
+# current ones is run again (the dam-break front's rung, whose overrides hold a value with a
+# space, is read back).
 set -eu
 cd "$(dirname "$0")/.."
 PYTHON=${PYTHON:-/usr/bin/python3}

@@ -280,18 +280,29 @@ def closed_pocket_window(series, min_fraction=0.8):
     return series["t"][k0], series["t"][k1], slice(k0, k1 + 1)
 
 
+def detrended(t, p):
+    """p(t) less its quadratic trend, and the median sampling interval of t [s]."""
+    return p - np.polyval(np.polyfit(t, p, 2), t), float(np.median(np.diff(t)))
+
+
+def band_std(t, p, band):
+    """Standard deviation [Pa] of p(t) (uniformly sampled, less its quadratic trend) band-passed to
+    band = (f_lo, f_hi) [Hz]."""
+    q, dt = detrended(t, p)
+    f, spectrum = np.fft.rfftfreq(len(t), dt), np.fft.rfft(q)
+    spectrum[(f < band[0]) | (f > band[1])] = 0
+    return float(np.fft.irfft(spectrum, len(t)).std())
+
+
 def band_spectrum(t, p, band, pad=16):
     """Amplitude spectrum of p(t) (uniformly sampled) less its quadratic trend, Hann-windowed and
     zero-padded pad times: frequencies [Hz] and amplitudes within band = (f_lo, f_hi), and the
-    standard deviation [Pa] of p band-passed to it."""
-    detrended = p - np.polyval(np.polyfit(t, p, 2), t)
-    dt = float(np.median(np.diff(t)))
+    standard deviation [Pa] of p band-passed to it (band_std)."""
+    q, dt = detrended(t, p)
     f = np.fft.rfftfreq(pad * len(t), dt)
-    amp = np.abs(np.fft.rfft(detrended * np.hanning(len(t)), pad * len(t)))
-    coarse_f, coarse = np.fft.rfftfreq(len(t), dt), np.fft.rfft(detrended)
-    coarse[(coarse_f < band[0]) | (coarse_f > band[1])] = 0
+    amp = np.abs(np.fft.rfft(q * np.hanning(len(t)), pad * len(t)))
     inside = (f >= band[0]) & (f <= band[1])
-    return f[inside], amp[inside], float(np.fft.irfft(coarse, len(t)).std())
+    return f[inside], amp[inside], band_std(t, p, band)
 
 
 POCKET_PERIOD_REF = 0.0578   # [s] the regression value of study dambreak-pocket (cases/dambreak-2phase/README.md)
@@ -312,7 +323,7 @@ def pocket_period(series, probes, period_ref, band=(10.0, 40.0)):
     during = (probes["time"] >= t_close) & (probes["time"] <= t_open)
     before = (probes["time"] >= 2 * t_close - t_open) & (probes["time"] < t_close)
     f, amp, std_during = band_spectrum(probes["time"][during], probes["p1"][during], band)
-    std_before = band_spectrum(probes["time"][before], probes["p1"][before], band)[2]
+    std_before = band_std(probes["time"][before], probes["p1"][before], band)
     f_peak = f[np.argmax(amp)]
     period = 1.0 / f_peak
     notes = ("pocket closed from t = %.2f to %.2f s, %.4f m^3/m; p1 peak at %.1f Hz (%g-%g Hz): T = %.4f s vs "
