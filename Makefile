@@ -42,7 +42,7 @@ CFLAGS  += -std=c11 -D_POSIX_C_SOURCE=200809L -Wall -Wextra -Werror -Iinclude \
 LDLIBS  := $(HDF5_LIBS) $(METIS_LIBS) $(YAML_LIBS) -lm
 
 # The case loader and what `check` runs of it, without MPI: the fuzz target and its replay.
-FUZZ_SRC := $(addprefix src/,case_load.c yaml_tree.c init.c geometry.c motion.c kernel.c parts.c) tests/fuzz/fuzz_case_load.c
+FUZZ_SRC := $(addprefix src/,case_load.c yaml_tree.c init.c geometry.c motion.c kernel.c parts.c mem.c) tests/fuzz/fuzz_case_load.c
 FUZZ_CFLAGS  = -std=c11 -D_POSIX_C_SOURCE=200809L -g -O1 -Wall -Wextra -Werror -Iinclude $(YAML_CFLAGS)
 CLANG    ?= clang
 SANITIZE ?= -fsanitize=address,undefined -fno-sanitize-recover=all

@@ -1,0 +1,20 @@
+/* mem.h — the one way mpsph allocates: a failed allocation ends the process with status 3 and a
+ * message naming what was being allocated and how many bytes. */
+#ifndef MPSPH_MEM_H
+#define MPSPH_MEM_H
+
+#include <stddef.h>
+
+/** malloc(bytes) for `what` (e.g. "halo send buffer"); never returns NULL. */
+void *mem_alloc(size_t bytes, const char *what);
+
+/** calloc(n, size) for `what`, zero-filled; refuses n * size overflowing size_t; never NULL. */
+void *mem_calloc(size_t n, size_t size, const char *what);
+
+/** realloc(ptr, bytes) for `what`; never returns NULL (ptr is then no longer valid). */
+void *mem_realloc(void *ptr, size_t bytes, const char *what);
+
+/** n * size for `what`, ending the process as an allocation failure when it overflows size_t. */
+size_t mem_bytes(size_t n, size_t size, const char *what);
+
+#endif

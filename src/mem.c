@@ -1,0 +1,38 @@
+/* mem.c — checked allocation: out of memory ends the process with status 3 and says what and how
+ * much. Under mpirun a non-zero exit of one rank ends the whole job. */
+#include "mem.h"
+
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+/* Report the failed allocation of `bytes` for `what` and end the process with status 3. */
+static void out_of_memory(size_t bytes, const char *what) {
+  fprintf(stderr, "mpsph: out of memory: %s (%zu bytes)\n", what, bytes);
+  fflush(stderr);
+  exit(3);
+}
+
+size_t mem_bytes(size_t n, size_t size, const char *what) {
+  if (size && n > SIZE_MAX / size) out_of_memory(SIZE_MAX, what);
+  return n * size;
+}
+
+void *mem_alloc(size_t bytes, const char *what) {
+  void *p = malloc(bytes ? bytes : 1);
+  if (!p) out_of_memory(bytes, what);
+  return p;
+}
+
+void *mem_calloc(size_t n, size_t size, const char *what) {
+  size_t bytes = mem_bytes(n, size, what);
+  void *p = calloc(bytes ? n : 1, bytes ? size : 1);
+  if (!p) out_of_memory(bytes, what);
+  return p;
+}
+
+void *mem_realloc(void *ptr, size_t bytes, const char *what) {
+  void *p = realloc(ptr, bytes ? bytes : 1);
+  if (!p) out_of_memory(bytes, what);
+  return p;
+}
