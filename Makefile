@@ -37,8 +37,9 @@ CFLAGS  ?= $(OPT_$(ARCH)) -g
 ifeq ($(SINGLE_PHASE),1)   # benchmark variant: multiphase specialisations compiled out
   CFLAGS += -DMPSPH_SINGLE_PHASE
 endif
-CFLAGS  += -std=c11 -D_POSIX_C_SOURCE=200809L -Wall -Wextra -Werror -Iinclude \
+BASE_CFLAGS := -std=c11 -D_POSIX_C_SOURCE=200809L -Wall -Wextra -Werror -Iinclude \
            -DMPSPH_VERSION='"$(VERSION)"' $(HDF5_CFLAGS) $(METIS_CFLAGS) $(YAML_CFLAGS)
+CFLAGS  += $(BASE_CFLAGS)
 LDLIBS  := $(HDF5_LIBS) $(METIS_LIBS) $(YAML_LIBS) -lm
 
 # The case loader and what `check` runs of it, without MPI: the fuzz target and its replay.
@@ -49,12 +50,16 @@ SANITIZE ?= -fsanitize=address,undefined -fno-sanitize-recover=all
 FUZZ_SECONDS ?= 120
 
 SRC      := $(wildcard src/*.c)
+# The sanitizer build of the solver (tests/combinations.sh): its own objects, -O1.
+ASAN_CFLAGS = -O1 -g $(SANITIZE) $(BASE_CFLAGS)
+ASAN_OBJ := $(patsubst src/%.c,build/asan/obj/%.o,$(SRC))
 LIB_OBJ  := $(patsubst src/%.c,build/obj/%.o,$(filter-out src/main.c,$(SRC)))
 TEST_SRC := $(wildcard tests/test_*.c)
 TEST_BIN := $(patsubst tests/%.c,build/tests/%,$(TEST_SRC))
 
-.PHONY: all deps test run validate bench fuzz clean
+.PHONY: all deps test run validate bench fuzz clean asan
 all: build/mpsph $(TEST_BIN) build/tests/fuzz_replay
+asan: build/asan/mpsph
 
 deps:
 	@scripts/install-deps
@@ -70,6 +75,14 @@ build/mpsph: build/obj/main.o build/libmpsph.a
 	@echo "LD $@"
 	@$(MPICC) $(CFLAGS) $^ -o $@ $(LDLIBS)
 
+build/asan/obj/%.o: src/%.c $(wildcard include/*.h) | build/asan/obj
+	@echo "CC (asan) $<"
+	@$(MPICC) $(ASAN_CFLAGS) -c $< -o $@
+
+build/asan/mpsph: $(ASAN_OBJ)
+	@echo "LD $@"
+	@$(MPICC) $(ASAN_CFLAGS) $^ -o $@ $(LDLIBS)
+
 build/tests/%: tests/%.c tests/check.h tests/engine_test.h build/libmpsph.a | build/tests
 	@echo "LD $@"
 	@$(MPICC) $(CFLAGS) -Itests $< build/libmpsph.a -o $@ $(LDLIBS)
@@ -83,7 +96,7 @@ build/fuzz/fuzz_case_load: $(FUZZ_SRC) $(wildcard include/*.h) | build/fuzz
 	@$(CLANG) $(FUZZ_CFLAGS) -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all \
 	  $(FUZZ_SRC) -o $@ $(YAML_LIBS) -lm
 
-build/obj build/tests build/fuzz:
+build/obj build/tests build/fuzz build/asan/obj:
 	mkdir -p $@
 
 # libFuzzer on the case loader for FUZZ_SECONDS; seeds: the cases and the regression inputs;
@@ -99,7 +112,7 @@ fuzz:
 	  -artifact_prefix=build/fuzz/ build/fuzz/corpus build/fuzz/seeds
 
 test: deps
-	@$(MAKE) --no-print-directory all
+	@$(MAKE) --no-print-directory all asan
 	@PYTHON=$(PYTHON) scripts/run-tests
 
 run: deps

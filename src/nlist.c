@@ -56,7 +56,7 @@ void nlist_build(struct nlist *l, const struct space *s, const struct parts *p, 
     neighbour_ranges(s, c, &r);
     long words = place_cell(l, k, &r, fluid_in_cell(s, p, c), n);
     l->bits = grow(l->bits, &l->capacity, n + words, sizeof(uint64_t));
-    memset(l->bits + n, 0, words * sizeof(uint64_t));
+    if (words > 0) memset(l->bits + n, 0, words * sizeof(uint64_t));   /* bits may still be NULL */
     for (long i = first; i < first + s->cell_count[c]; i++) {
       if (p->phase[i] == PHASE_WALL) continue;
       mark_neighbours(l, p, i, &r, l->bits + n);
