@@ -1,6 +1,7 @@
 /* engine_step.c — the stage pipeline, the RK4 step (the predictor-corrector of paper 003 with scheme
  * same-phase-continuity) and the time-step limits (paper 000 Eq. 12). */
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include "eos.h"
@@ -115,8 +116,15 @@ static int halo_field_list(struct engine *e, int mask, double **f) {
   return n;
 }
 
+/* Append an operation to the pipeline. engine_assemble makes at most 17 (ENGINE_MAX_OPS, engine.h),
+ * whatever the case; one more is a programming error, stopped here before it overflows e->ops. */
 static void add_op(struct engine *e, const char *name, void (*pass)(struct engine *), int mask,
                    int once) {
+  if (e->n_ops == ENGINE_MAX_OPS) {
+    fprintf(stderr, "mpsph: internal error: the stage pipeline has more than %d operations (adding '%s')\n",
+            ENGINE_MAX_OPS, name);
+    exit(3);
+  }
   e->ops[e->n_ops++] = (struct stage_op){.name = name, .pass = pass, .halo_fields = mask,
                                          .once_per_step = once};
 }

@@ -3,6 +3,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "mem.h"
 #include "proxy.h"
 
 enum { TAG_COUNT = 11, TAG_PARTS = 12, TAG_FIELDS = 13, TAG_MIGRATE_COUNT = 14, TAG_MIGRATE = 15 };
@@ -54,7 +55,8 @@ static void reserve_buf(double **buf, long *cap, long n) {
 
 /* Mark, for every rank, the owned cells lying within `layers` of one of its cells. */
 static void mark_cells_out(const struct space *s, char *mark /* n_ranks x n_owned_cells */) {
-  long nb[343];
+  long *nb = mem_alloc(mem_bytes(grid_stencil_size(&s->grid, s->halo_layers), sizeof(long), "halo"),
+                       "halo cell stencil");
   for (long k = 0; k < s->n_owned_cells; k++) {
     int n = grid_stencil(&s->grid, s->owned_cells[k], s->halo_layers, nb);
     for (int j = 0; j < n; j++) {
@@ -62,6 +64,7 @@ static void mark_cells_out(const struct space *s, char *mark /* n_ranks x n_owne
       if (r != s->rank) mark[(long)r * s->n_owned_cells + k] = 1;
     }
   }
+  free(nb);
 }
 
 void halo_build(struct halo *h, const struct space *s, MPI_Comm comm) {
