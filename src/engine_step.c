@@ -6,13 +6,12 @@
 #include <string.h>
 #include "eos.h"
 #include "passes.h"
+#include "mem.h"
 
 #define MOTION_SAFETY 0.75   /* fraction of the allowed motion per step used by the dt limit */
 
 static double *grow(double *a, long n) {
-  double *q = realloc(a, (n ? n : 1) * sizeof(double));
-  if (!q) abort();
-  return q;
+  return mem_realloc(a, mem_bytes((size_t)n, sizeof(double), "work array"), "work array");
 }
 
 /* One work array: where its pointer lives, whether halo slots use it (else only the owned
