@@ -25,4 +25,7 @@ int grid_cell_clamped(const struct grid *g, const double *x);
  *  `out` must hold (2*layers+1)^dim entries. */
 int grid_stencil(const struct grid *g, long c, int layers, long *out);
 
+/** (2*layers+1)^dim: the most cells grid_stencil can return, the size its `out` needs. */
+long grid_stencil_size(const struct grid *g, int layers);
+
 #endif

@@ -6,6 +6,7 @@
 #include <unistd.h>
 #include "engine.h"
 #include "outdir.h"
+#include "mem.h"
 
 /* Peak resident memory of this process [bytes]. */
 static double peak_rss_bytes(void) {
@@ -113,7 +114,7 @@ static void summarise(struct engine *e, long steps, double loop_seconds, struct 
   s->output_max = max_over_ranks(e, e->t_output);
   s->steps_max = max_over_ranks(e, e->t_steps);
   max_mean(e, e->t_steps_cpu, &s->cpu_max, &s->cpu_mean);
-  if (e->rank == 0) all = malloc(PER_RANK * (size_t)e->n_ranks * sizeof(double));
+  if (e->rank == 0) all = mem_calloc(PER_RANK * (size_t)e->n_ranks, sizeof(double), "per-rank memory report");
   MPI_Gather(rss, PER_RANK, MPI_DOUBLE, all, PER_RANK, MPI_DOUBLE, 0, e->comm);
   s->per_rank = all;
 }

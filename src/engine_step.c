@@ -1,17 +1,17 @@
 /* engine_step.c — the stage pipeline, the RK4 step (the predictor-corrector of paper 003 with scheme
  * same-phase-continuity) and the time-step limits (paper 000 Eq. 12). */
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include "eos.h"
 #include "passes.h"
+#include "mem.h"
 
 #define MOTION_SAFETY 0.75   /* fraction of the allowed motion per step used by the dt limit */
 
 static double *grow(double *a, long n) {
-  double *q = realloc(a, (n ? n : 1) * sizeof(double));
-  if (!q) abort();
-  return q;
+  return mem_realloc(a, mem_bytes((size_t)n, sizeof(double), "work array"), "work array");
 }
 
 /* One work array: where its pointer lives, whether halo slots use it (else only the owned
@@ -115,8 +115,15 @@ static int halo_field_list(struct engine *e, int mask, double **f) {
   return n;
 }
 
+/* Append an operation to the pipeline. engine_assemble makes at most 17 (ENGINE_MAX_OPS, engine.h),
+ * whatever the case; one more is a programming error, stopped here before it overflows e->ops. */
 static void add_op(struct engine *e, const char *name, void (*pass)(struct engine *), int mask,
                    int once) {
+  if (e->n_ops == ENGINE_MAX_OPS) {
+    fprintf(stderr, "mpsph: internal error: the stage pipeline has more than %d operations (adding '%s')\n",
+            ENGINE_MAX_OPS, name);
+    exit(3);
+  }
   e->ops[e->n_ops++] = (struct stage_op){.name = name, .pass = pass, .halo_fields = mask,
                                          .once_per_step = once};
 }

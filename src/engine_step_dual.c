@@ -24,6 +24,7 @@
 /* The operations, in the order of the pipeline. */
 enum { OP_STATE_HALO, OP_VOLUMES, OP_LISTS, OP_REINIT, OP_REINIT_HALO,
        OP_TRANSPORT, OP_MOMENTUM, OP_NORMALS, OP_NORMALS_HALO, OP_SURFACE_TENSION, OP_CONTINUITY, N_DUAL_OPS };
+_Static_assert(N_DUAL_OPS <= ENGINE_MAX_OPS, "the dual pipeline must fit in engine.ops");
 
 static const struct {
   const char *name;

@@ -60,3 +60,9 @@ int grid_stencil(const struct grid *g, long c, int layers, long *out) {
   }
   return count;
 }
+
+long grid_stencil_size(const struct grid *g, int layers) {
+  long side = 2L * layers + 1, size = 1;
+  for (int d = 0; d < g->dim; d++) size *= side;
+  return size;
+}

@@ -6,6 +6,7 @@
 #include "eos.h"
 #include "geometry.h"
 #include "init.h"
+#include "mem.h"
 
 #define BOUNDARY_TOL 1e-9   /* relative tolerance on distances to wall boundaries */
 
@@ -243,7 +244,8 @@ static void wall_nodes_open(struct wall_nodes *wn, const struct case_def *c, int
   if (wn->tank) {
     wn->n[1] = wn->n[2] = 1;
     for (int d = 0; d < wn->dim; d++) {
-      wn->axis[d] = malloc(((size_t)((s->max[d] - s->min[d]) / c->dx) + 2 * wn->layers + 4) * sizeof(double));
+      wn->axis[d] = mem_calloc((size_t)((s->max[d] - s->min[d]) / c->dx) + 2 * wn->layers + 4, sizeof(double),
+                               "wall lattice axis");
       wn->n[d] = tank_axis(s, d, c->dx, wn->layers, wn->axis[d]);
     }
     wn->count = wn->n[0] * wn->n[1] * wn->n[2];

@@ -3,14 +3,14 @@
 #include <stdlib.h>
 #include <string.h>
 #include "nlist.h"
+#include "mem.h"
 
 #define WORD_BITS 64
 
 static void *grow(void *a, long *capacity, long needed, size_t size) {
   if (needed <= *capacity) return a;
   long n = needed + needed / 4 + 64;
-  void *q = realloc(a, n * size);
-  if (!q) abort();
+  void *q = mem_realloc(a, mem_bytes((size_t)n, size, "neighbour lists"), "neighbour lists");
   *capacity = n;
   return q;
 }

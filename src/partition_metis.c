@@ -3,6 +3,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include "partition.h"
+#include "mem.h"
 
 #define METIS_SEED 42
 #define METIS_UBVEC 1.03f   /* allowed load imbalance of a part */
@@ -10,8 +11,8 @@
 /* CSR adjacency of the cells: each cell linked to its 3^dim - 1 neighbours. */
 static void cell_graph(const struct grid *g, idx_t **xadj_out, idx_t **adjncy_out) {
   int max_nb = g->dim == 2 ? 9 : 27;
-  idx_t *xadj = malloc((g->n_cells + 1) * sizeof(idx_t));
-  idx_t *adjncy = malloc(g->n_cells * max_nb * sizeof(idx_t));
+  idx_t *xadj = mem_calloc(g->n_cells + 1, sizeof(idx_t), "METIS cell graph");
+  idx_t *adjncy = mem_calloc((size_t)g->n_cells * max_nb, sizeof(idx_t), "METIS cell graph");
   long nb[27];
   xadj[0] = 0;
   for (long c = 0; c < g->n_cells; c++) {
@@ -30,7 +31,8 @@ static int metis_partition(const struct grid *g, const int64_t *weight, int n_pa
   idx_t *xadj, *adjncy;
   cell_graph(g, &xadj, &adjncy);
   idx_t nvtxs = (idx_t)g->n_cells, ncon = 1, nparts = n_parts, objval;
-  idx_t *vwgt = malloc(g->n_cells * sizeof(idx_t)), *part = malloc(g->n_cells * sizeof(idx_t));
+  idx_t *vwgt = mem_calloc(g->n_cells, sizeof(idx_t), "METIS cell weights");
+  idx_t *part = mem_calloc(g->n_cells, sizeof(idx_t), "METIS partition");
   for (long c = 0; c < g->n_cells; c++) vwgt[c] = (idx_t)weight[c];
   idx_t options[METIS_NOPTIONS];
   METIS_SetDefaultOptions(options);
@@ -50,7 +52,7 @@ static int metis_partition(const struct grid *g, const int64_t *weight, int n_pa
 
 /* The first part that received no cell, or -1. */
 static int empty_part(const struct grid *g, const int *owner, int n_parts) {
-  int *count = calloc(n_parts, sizeof(int));
+  int *count = mem_calloc(n_parts, sizeof(int), "cells per rank");
   for (long c = 0; c < g->n_cells; c++) count[owner[c]]++;
   int empty = -1;
   for (int r = n_parts - 1; r >= 0; r--)
@@ -95,7 +97,7 @@ int partition_cells(const struct grid *g, const int64_t *weight, int n_parts, MP
 
 double partition_imbalance(const struct grid *g, const int64_t *weight, const int *owner,
                            int n_parts) {
-  double *load = calloc(n_parts, sizeof(double)), total = 0, max = 0;
+  double *load = mem_calloc(n_parts, sizeof(double), "load per rank"), total = 0, max = 0;
   for (long c = 0; c < g->n_cells; c++) load[owner[c]] += (double)weight[c];
   for (int r = 0; r < n_parts; r++) {
     total += load[r];

@@ -3,16 +3,10 @@
 #include <stdlib.h>
 #include <string.h>
 #include "parts.h"
+#include "mem.h"
 
-/* realloc that aborts the run on failure (out of memory is not recoverable here). */
-static void *grow(void *ptr, size_t bytes) {
-  void *q = realloc(ptr, bytes ? bytes : 1);
-  if (!q) {
-    fprintf(stderr, "mpsph: out of memory growing particle arrays to %zu bytes\n", bytes);
-    exit(3);
-  }
-  return q;
-}
+/* Grow a particle array to bytes (out of memory ends the run, mem.h). */
+static void *grow(void *ptr, size_t bytes) { return mem_realloc(ptr, bytes, "particle arrays"); }
 
 void parts_init(struct parts *p, int dim, long capacity, int with_walls) {
   memset(p, 0, sizeof(*p));

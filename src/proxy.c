@@ -3,6 +3,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "mem.h"
 #include "proxy.h"
 
 enum { TAG_COUNT = 11, TAG_PARTS = 12, TAG_FIELDS = 13, TAG_MIGRATE_COUNT = 14, TAG_MIGRATE = 15 };
@@ -37,24 +38,15 @@ void parts_unpack(struct parts *p, long j, const double *b) {
   p->wall[j] = (int)*b;
 }
 
-static void *xrealloc(void *ptr, size_t bytes) {
-  void *q = realloc(ptr, bytes ? bytes : 1);
-  if (!q) {
-    fprintf(stderr, "mpsph: out of memory in the halo (%zu bytes)\n", bytes);
-    exit(3);
-  }
-  return q;
-}
-
 static void reserve_buf(double **buf, long *cap, long n) {
   if (n <= *cap) return;
   *cap = n + n / 4 + 64;
-  *buf = xrealloc(*buf, *cap * sizeof(double));
+  *buf = mem_realloc(*buf, mem_bytes(*cap, sizeof(double), "halo buffer"), "halo buffer");
 }
 
 /* Mark, for every rank, the owned cells lying within `layers` of one of its cells. */
 static void mark_cells_out(const struct space *s, char *mark /* n_ranks x n_owned_cells */) {
-  long nb[343];
+  long *nb = mem_calloc(grid_stencil_size(&s->grid, s->halo_layers), sizeof(long), "halo cell stencil");
   for (long k = 0; k < s->n_owned_cells; k++) {
     int n = grid_stencil(&s->grid, s->owned_cells[k], s->halo_layers, nb);
     for (int j = 0; j < n; j++) {
@@ -62,15 +54,16 @@ static void mark_cells_out(const struct space *s, char *mark /* n_ranks x n_owne
       if (r != s->rank) mark[(long)r * s->n_owned_cells + k] = 1;
     }
   }
+  free(nb);
 }
 
 void halo_build(struct halo *h, const struct space *s, MPI_Comm comm) {
   halo_free(h);
   h->comm = comm;
-  h->proxy_of_rank = malloc(s->n_ranks * sizeof(int));
-  char *mark = calloc((size_t)s->n_ranks * (s->n_owned_cells ? s->n_owned_cells : 1), 1);
+  h->proxy_of_rank = mem_calloc(s->n_ranks, sizeof(int), "halo proxy table");
+  char *mark = mem_calloc((size_t)s->n_ranks, s->n_owned_cells ? s->n_owned_cells : 1, "halo cell marks");
   mark_cells_out(s, mark);
-  h->proxies = calloc(s->n_ranks, sizeof(struct proxy));
+  h->proxies = mem_calloc(s->n_ranks, sizeof(struct proxy), "halo proxies");
   for (int r = 0; r < s->n_ranks; r++) {
     const char *row = mark + (long)r * s->n_owned_cells;
     long n = 0;
@@ -79,13 +72,13 @@ void halo_build(struct halo *h, const struct space *s, MPI_Comm comm) {
     if (!n) continue;
     struct proxy *px = &h->proxies[h->n_proxies++];
     px->rank = r;
-    px->cells_out = malloc(n * sizeof(long));
+    px->cells_out = mem_calloc(n, sizeof(long), "halo cells to send");
     for (long k = 0; k < s->n_owned_cells; k++)
       if (row[k]) px->cells_out[px->n_cells_out++] = s->owned_cells[k];
   }
   free(mark);
-  h->requests = malloc(2 * (h->n_proxies + 1) * sizeof(MPI_Request));
-  h->counts = malloc(4 * (h->n_proxies + 1) * sizeof(long));
+  h->requests = mem_calloc(2 * (h->n_proxies + 1), sizeof(MPI_Request), "halo requests");
+  h->counts = mem_calloc(4 * (h->n_proxies + 1), sizeof(long), "halo counts");
 }
 
 long halo_bytes(const struct halo *h) {
@@ -128,7 +121,8 @@ static void collect_send(struct proxy *px, const struct space *s) {
   for (long k = 0; k < px->n_cells_out; k++) n += s->cell_count[px->cells_out[k]];
   if (n > px->send_index_cap) {
     px->send_index_cap = n + n / 4 + 64;
-    px->send_index = xrealloc(px->send_index, px->send_index_cap * sizeof(long));
+    px->send_index = mem_realloc(px->send_index, mem_bytes(px->send_index_cap, sizeof(long), "halo send index"),
+                                  "halo send index");
   }
   px->n_send = 0;
   for (long k = 0; k < px->n_cells_out; k++) {

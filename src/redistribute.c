@@ -2,11 +2,13 @@
 #include <stdlib.h>
 #include "proxy.h"
 #include "redistribute.h"
+#include "mem.h"
 
 /* Counts per destination rank and a packing order grouped by destination. */
 static long *group_by_owner(const struct space *s, const struct parts *p, int *send_count) {
   int nr = s->n_ranks;
-  long *offset = calloc(nr + 1, sizeof(long)), *order = malloc((p->n_owned + 1) * sizeof(long));
+  long *offset = mem_calloc(nr + 1, sizeof(long), "migration offsets");
+  long *order = mem_calloc(p->n_owned + 1, sizeof(long), "migration order");
   for (long i = 0; i < p->n_owned; i++) send_count[s->owner[p->cell[i]]]++;
   for (int r = 0; r < nr; r++) offset[r + 1] = offset[r] + send_count[r];
   for (long i = 0; i < p->n_owned; i++) order[offset[s->owner[p->cell[i]]]++] = i;
@@ -16,7 +18,7 @@ static long *group_by_owner(const struct space *s, const struct parts *p, int *s
 
 void redistribute_parts(const struct space *s, struct parts *p, MPI_Comm comm) {
   int nr = s->n_ranks, w = parts_packed_size(p);
-  int *cnt = calloc(4 * nr, sizeof(int)), *send_count = cnt, *recv_count = cnt + nr;
+  int *cnt = mem_calloc(4 * nr, sizeof(int), "migration counts"), *send_count = cnt, *recv_count = cnt + nr;
   int *sdispl = cnt + 2 * nr, *rdispl = cnt + 3 * nr;
   long *order = group_by_owner(s, p, send_count);
   MPI_Alltoall(send_count, 1, MPI_INT, recv_count, 1, MPI_INT, comm);
@@ -26,8 +28,8 @@ void redistribute_parts(const struct space *s, struct parts *p, MPI_Comm comm) {
     rdispl[r] = (r ? rdispl[r - 1] + recv_count[r - 1] * w : 0);
     n_recv += recv_count[r];
   }
-  double *sbuf = malloc(((size_t)p->n_owned * w + 1) * sizeof(double));
-  double *rbuf = malloc(((size_t)n_recv * w + 1) * sizeof(double));
+  double *sbuf = mem_calloc((size_t)p->n_owned * w + 1, sizeof(double), "migration send buffer");
+  double *rbuf = mem_calloc((size_t)n_recv * w + 1, sizeof(double), "migration receive buffer");
   for (long k = 0; k < p->n_owned; k++) parts_pack(p, order[k], sbuf + k * w);
   for (int r = 0; r < nr; r++) {
     send_count[r] *= w;

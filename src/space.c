@@ -2,12 +2,10 @@
 #include <stdlib.h>
 #include <string.h>
 #include "space.h"
+#include "mem.h"
 
-static void *xcalloc(size_t n, size_t size) {
-  void *q = calloc(n ? n : 1, size);
-  if (!q) abort();
-  return q;
-}
+/* Zeroed cell-index arrays (out of memory ends the run, mem.h). */
+static void *xcalloc(size_t n, size_t size) { return mem_calloc(n, size, "cell index"); }
 
 void space_init(struct space *s, const struct grid *g, int rank, int n_ranks, int halo_layers) {
   memset(s, 0, sizeof(*s));
