@@ -5,7 +5,8 @@ the solver's options, one combination a line.
 Factors: scheme, dimension, kernel, h/dx, walls (none, fixed, moving, obstacle), free-surface
 detection, surface tension, shifting, the interface options (interface_pressure,
 interface_viscosity, interface_mode, interface_sharpness), the scheme-specific model switches
-(spc_model, dissipation_form) and the number of ranks. The word levels are read from the loader's
+(spc_model, dissipation_form), the number of ranks and re-partitioning every step. Every run
+also evaluates every kind of probe and writes stats and probes rows at every step. The word levels are read from the loader's
 tables in src/case_load.c, so a new scheme, kernel or option word enters the design by itself.
 
 Every pair of levels that some accepted combination holds is covered by an accepted combination
@@ -29,6 +30,7 @@ WALLS = ["none", "fixed", "moving", "obstacle"]
 SURFACE_TENSION = ["0", "0.07"]
 SHARPNESS = ["0", "0.08"]
 RANKS = ["1", "2"]
+REPARTITION_EVERY = ["0", "1"]   # parallel.repartition_every: on imbalance only, every step
 MAX_STEPS = 3
 SEED = 20
 CANDIDATES = 30   # greedy candidates tried for each combination (AETG)
@@ -72,6 +74,7 @@ def factors():
         ("model", ["default", "spc_model=" + loader_words(src, "SPC_MODEL_NAMES")[1],
                    "dissipation_form=" + loader_words(src, "DISSIPATION_NAMES")[1]]),
         ("ranks", RANKS),
+        ("repartition_every", REPARTITION_EVERY),
     ]
 
 
@@ -201,7 +204,12 @@ SCENES = {
     "2": {
         "case": "tests/stability/pocket.yaml",
         "sets": ["resolution.dx=0.015",
-                 "domain={min: [-0.6, -0.6], max: [0.8, 1.2]}"],
+                 "domain={min: [-0.6, -0.6], max: [0.8, 1.2]}",
+                 "probes=[{name: p_point, position: [0.1, 0.0]}, "
+                 "{name: p_mls, position: [0.1, 0.05], interpolation: mls}, "
+                 "{name: p_face, position: [0.1, 0.0], diameter: 0.05, axis: [1, 0], "
+                 "interpolation: mls}, {name: gauge, kind: elevation, position: [0.1, 0], "
+                 "phase: water}, {name: water, kind: integral, phase: water}]"],
         "tank": "{box: {min: [0, 0], max: [0.2, 0.6]}}",
         "moving": "{box: {min: [0, 0], max: [0.2, 0.6]}, motion: {translation: "
                   "{amplitude: [0.02, 0], period: 0.5}}}",
@@ -214,7 +222,11 @@ SCENES = {
                  "phases=[{name: water, rho0: 1000, c0: 31.3, incompressible: true}, "
                  "{name: air, rho0: 1, c0: 340, gamma: 1.4}]",
                  "fluids=[{phase: water, box: {min: [0, 0, 0], max: [0.42, 0.24, 0.3]}}, "
-                 "{phase: air, box: {min: [0, 0.24, 0], max: [0.42, 0.48, 0.3]}}]"],
+                 "{phase: air, box: {min: [0, 0.24, 0], max: [0.42, 0.48, 0.3]}}]",
+                 "probes=[{name: p_point, position: [0.21, 0.0, 0.15]}, "
+                 "{name: p_mls, position: [0.21, 0.1, 0.15], interpolation: mls}, "
+                 "{name: gauge, kind: elevation, position: [0.21, 0, 0.15], phase: water}, "
+                 "{name: air, kind: integral, phase: air}]"],
         "tank": "{box: {min: [0, 0, 0], max: [0.42, 0.48, 0.3]}}",
         "moving": "{box: {min: [0, 0, 0], max: [0.42, 0.48, 0.3]}, motion: {translation: "
                   "{amplitude: [0.02, 0, 0], period: 0.5}}}",
@@ -234,6 +246,8 @@ def overrides(a):
     scene = SCENES[a["dimension"]]
     sets = list(scene["sets"]) + [
         "time.max_steps=%d" % MAX_STEPS, "output.progress_interval=1000",
+        "output.stats_interval=1e-9", "output.probes_interval=1e-9",
+        "parallel.repartition_every=" + a["repartition_every"],
         "scheme=" + a["scheme"], "kernel=" + a["kernel"],
         "resolution.h_over_dx=" + a["h_over_dx"], "walls=" + walls_value(scene, a["walls"])]
     sets += ["physics.%s=%s" % (k, a[k]) for k in
