@@ -1,13 +1,15 @@
 #!/usr/bin/env bash
 # Combination test: the sanitizer build (build/asan/mpsph: AddressSanitizer and
-# UndefinedBehaviorSanitizer) runs 3 steps of each combination of tests/combinations.py's pairwise
-# design (scheme x dimension x kernel x h/dx x walls x free surface x surface tension x shifting
-# x interface options x scheme model x 1 or 2 ranks). Each run must end with exit status 0, 1 or
-# 2, with an "mpsph:" message when not 0, never by a signal, a time-out or a sanitizer report; a
-# combination the design marks refused must end with 1. Prints each failure, then the count per
-# outcome and the time taken.
-# Usage: bash tests/combinations.sh [LABEL-PATTERN]   (runs the combinations whose label matches)
-#   COMBINATIONS_SEED=N: another pairwise design (tests/combinations.py --seed N)
+# UndefinedBehaviorSanitizer, `make asan`) runs 3 steps of each combination of the covering design
+# of tests/combinations.py (three pairwise covers over scheme x dimension x kernel x h/dx x walls x
+# free surface x surface tension x shifting x interface options x scheme model x 1 or 2 ranks x
+# re-partitioning, plus six combinations the loader must refuse). Each run must end with exit
+# status 0, 1 or 2, with an "mpsph:" message when not 0, never by a signal, a time-out or a
+# sanitizer report; a combination the design marks refused must end with 1. Prints each failure
+# with the command that reproduces it, then the count per outcome, the time taken and the CPU
+# time of the runs.
+# Usage: bash tests/combinations.sh [LABEL-PATTERN]   (runs the combinations whose label contains
+#   it, e.g. scheme=riemann); COMBINATIONS_SEED=N: another design (tests/combinations.py --seed N)
 set -u
 cd "$(dirname "$0")/.."
 PYTHON=${PYTHON:-/usr/bin/python3}
@@ -29,11 +31,23 @@ unexpected_refusals=0
 fail=0
 start=$SECONDS
 
-# report LABEL NP LOG: print the combination's command line and the end of its log.
+# shell_words ARG...: the arguments as a shell command line (single quotes where needed).
+shell_words() {
+  local a out=""
+  for a; do
+    if [[ "$a" =~ ^[A-Za-z0-9_./=:,+-]+$ ]]; then out+="$a "; else out+="'${a//\'/\'\\\'\'}' "; fi
+  done
+  echo "$out"
+}
+
+# report LABEL LOG COMMAND...: print the combination, its command line (quoted for a shell) and
+# the messages and first stack frames of its log.
 report() {
-  echo "    ranks $2: $1"
-  echo "    command: ${cmd[*]}"
-  grep -E 'mpsph:|ERROR: |runtime error|signal|SUMMARY|^    #[0-9]' "$3" | head -n 20 | sed 's/^/    | /'
+  local label=$1 log=$2
+  shift 2
+  echo "    $label"
+  echo "    command: $(shell_words "$@")"
+  grep -E 'mpsph:|ERROR: |runtime error|signal|SUMMARY|^    #[0-9]' "$log" | head -n 20 | sed 's/^/    | /'
 }
 
 # verdict STATUS LOG EXPECT: empty when the run ended cleanly, else what went wrong.
@@ -69,7 +83,7 @@ while IFS=$'\t' read -r -a row; do
     outcome[failed]=$((outcome[failed] + 1))
     fail=1
     echo "FAIL #$n: $problem ($((SECONDS - t0)) s)"
-    report "$label" "$np" "$log"
+    report "$label" "$log" "${cmd[@]}"
     continue
   fi
   outcome[$status]=$((outcome[$status] + 1))
@@ -78,9 +92,11 @@ while IFS=$'\t' read -r -a row; do
   [ "$status" -ne 0 ] && echo "    $label"$'\n'"    $(grep -m1 '^mpsph: ' "$log")"
 done < "$tmp/design.tsv"
 
-echo "$n combinations ($("$PYTHON" "${design[@]}" --count) in the pairwise design):" \
-     "${outcome[0]} exit 0, ${outcome[1]} exit 1 (refused; $unexpected_refusals of them not" \
-     "among the design's refused), ${outcome[2]} exit 2, ${outcome[failed]} failed;" \
+echo "$n combinations run (design: $("$PYTHON" "${design[@]}" --count)):" \
+     "${outcome[0]} exit 0, ${outcome[1]} exit 1 ($unexpected_refusals of them outside the" \
+     "design's refused ones), ${outcome[2]} exit 2, ${outcome[failed]} failed;" \
      "$((SECONDS - start)) s"
-times
+times > "$tmp/times"   # second line: the children's user and system time
+read -r run_user run_sys < <(sed -n 2p "$tmp/times")
+echo "CPU time of the runs: user $run_user, system $run_sys"
 exit $fail
