@@ -255,7 +255,7 @@ static long rhs_values(struct engine *e, double *buf, int save) {
   return differ;
 }
 
-/* Check 3: delta and alpha set to zero; the skipped terms against the full evaluation. */
+/* Check 6: delta and alpha set to zero; the skipped terms against the full evaluation. */
 static void check_terms_off(struct engine *e, struct case_def *c) {
   c->delta = 0;
   c->alpha = 0;
