@@ -194,6 +194,8 @@ static void set_fields(struct engine *e, int noisy) {
   }
 }
 
+/* Check 4: the renormalised density gradient of the linear density field, 1.5 supports inside
+ * each phase, to round-off. */
 static void check_gradient(struct engine *e) {
   const struct parts *p = &e->p;
   long tested = 0, bad = 0;
