@@ -6,7 +6,7 @@
 #include "case.h"
 
 /** Before a run of case c on the ranks of comm: the paths of the files in the folder outdir and
- *  the checkpoint restart (NULL: none named) are short enough for MPI-IO (Open MPI writes
+ *  the checkpoint restart (NULL: none named; it must be a regular file) are short enough for MPI-IO (Open MPI writes
  *  "<path>.locktest.<rank>" into a buffer of 256 bytes at every MPI_File_open: 244 characters on
  *  up to 10 ranks, 243 on up to 100, ...), the output folder
  *  can be written (probed on rank 0, leaving nothing behind), and the particles fit in the memory

@@ -958,6 +958,11 @@ static const char *not_regular(mode_t mode) {
          : S_ISSOCK(mode) ? "a socket" : "not a regular file";
 }
 
+const char *case_file_not_regular(const char *path) {
+  struct stat st;
+  return stat(path, &st) == 0 ? not_regular(st.st_mode) : NULL;
+}
+
 /* The regular file at path opened for reading, or NULL with a message. Its type is asked before
  * it is opened, and again of the open file (which may have been replaced in between): opening a
  * FIFO would wait for a writer, reading a device might never end. */

@@ -112,8 +112,9 @@ static int path_limit(int n_ranks) {
 }
 
 /* 1 with a message in err when the output folder's files, or the checkpoint to restart from
- * (NULL: none named), have paths longer than MPI-IO takes on n_ranks ranks. */
-static int paths_too_long(const char *outdir, const char *restart, int n_ranks, char *err, size_t len) {
+ * (NULL: none named), have paths longer than MPI-IO takes on n_ranks ranks, or that checkpoint
+ * is not a regular file (MPI-IO would wait forever on a FIFO). */
+static int paths_unusable(const char *outdir, const char *restart, int n_ranks, char *err, size_t len) {
   int limit = path_limit(n_ranks);
   size_t folder = strlen(outdir), longest = folder + 1 + strlen(LONGEST_OUTPUT_FILE);
   const char *why = "Open MPI's MPI-IO writes '<file>" MPIIO_SUFFIX "<rank>' into a buffer of "
@@ -124,6 +125,10 @@ static int paths_too_long(const char *outdir, const char *restart, int n_ranks, 
                     "use a shorter folder name (a relative path or a symbolic link)", folder,
                     (size_t)limit - 1 - strlen(LONGEST_OUTPUT_FILE), n_ranks, n_ranks == 1 ? "" : "s",
                     LONGEST_OUTPUT_FILE, longest, limit, why), 1;
+  const char *kind = restart ? case_file_not_regular(restart) : NULL;
+  if (kind)
+    return snprintf(err, len, "--restart: cannot read '%s': it is %s, expected a checkpoint file",
+                    restart, kind), 1;
   if (restart && strlen(restart) > (size_t)limit)
     return snprintf(err, len, "--restart: the checkpoint's path has %zu characters, at most %d allowed on "
                     "%d rank%s (%s); use a shorter path (a relative path or a symbolic link)",
@@ -136,7 +141,7 @@ int preflight_run(const struct case_def *c, const char *outdir, const char *rest
   char err[ERR_LEN];
   MPI_Comm_rank(comm, &rank);
   MPI_Comm_size(comm, &n_ranks);
-  if (rank == 0) status = paths_too_long(outdir, restart, n_ranks, err, sizeof err);
+  if (rank == 0) status = paths_unusable(outdir, restart, n_ranks, err, sizeof err);
   if (rank == 0 && !status) status = outdir_probe(outdir, err, sizeof err);
   if (verdict(status, err, rank, comm)) return 1;
   double available = available_per_rank(comm, &per_node);

@@ -117,6 +117,9 @@ refuses long-outdir '-o: the output folder has 1000 characters, at most 218 allo
 refuses long-restart "--restart: the checkpoint's path has 1000 characters, at most 244 allowed on 1 rank" -- \
   run long-restart --restart "$long"
 # -o '' wrote every file into /: the bad time.end keeps a build without the refusal from running.
+mkfifo "$tmp/fifo.h5"   # MPI-IO waited for a writer, and SIGTERM did not end the wait
+refuses restart-fifo "--restart: cannot read '$tmp/fifo\.h5': it is a FIFO \(named pipe\), expected a checkpoint file" -- \
+  timeout -k 2 20 build/mpsph run "$case" -o "$tmp/restart-fifo" --restart "$tmp/fifo.h5"
 refuses empty-outdir '-o: got an empty folder name, expected a path' -- \
   build/mpsph run "$case" -o '' --set time.end=-1
 refuses two-outdirs "-o: given twice \('$tmp/two-outdirs' and '$tmp/two-outdirs-b'\)" -- \
