@@ -71,8 +71,8 @@ static int parse_args(int argc, char **argv, struct args *a, char *err, size_t l
   if (strcmp(a->command, "run") && strcmp(a->command, "check"))
     return snprintf(err, len, "unknown command '%s'\n%s", a->command, usage), 1;
   if (!a->case_path) return snprintf(err, len, "%s needs a case file\n%s", a->command, usage), 1;
-  if (a->restart && strcmp(a->command, "run"))
-    return snprintf(err, len, "--restart: only with run\n%s", usage), 1;
+  if ((a->restart || a->outdir) && strcmp(a->command, "run"))
+    return snprintf(err, len, "%s: only with run\n%s", a->restart ? "--restart" : "-o", usage), 1;
   return 0;
 }
 

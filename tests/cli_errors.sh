@@ -33,6 +33,7 @@ expect 1 "unexpected argument '--frobnicate'" -- build/mpsph check "$case" --fro
 expect 1 "^mpsph: -o: needs a value after it, none given" -- build/mpsph run "$case" -o
 expect 1 "^mpsph: --set: needs a value after it, none given" -- build/mpsph check "$case" --set
 expect 1 "^mpsph: --restart: got an empty file name" -- build/mpsph run "$case" --restart ''
+expect 1 "^mpsph: -o: only with run" -- build/mpsph check "$case" -o "$tmp/check-out"
 # As many --set as the command line holds (here 300; the last one wins).
 sets=()
 for k in $(seq 300); do sets+=(--set "time.cfl=0.$((k % 9 + 1))"); done
