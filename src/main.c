@@ -165,6 +165,7 @@ static int start_run(const struct case_def *c, const char *outdir, const char *r
   return status;
 }
 
+/* The run command: the checks of preflight_run, then the run into -o (default runs/<name>). */
 static int run_case(const struct case_def *c, const struct args *a) {
   char *defdir = path_join("runs", c->name), *checkpoint = NULL;
   const char *outdir = a->outdir ? a->outdir : defdir;
