@@ -25,4 +25,9 @@ char *case_to_yaml(const struct case_def *c);
  *  if buf is not NULL, the name of column col (< that number) in buf. */
 int case_probe_column(const struct case_def *c, int k, int col, char *buf, size_t len);
 
+/** What the file at path is when it exists but is not a regular file ("a directory", "a FIFO
+ *  (named pipe)", "a character device", ...), or NULL: a regular file, or none (opening it then
+ *  says why). Input files are refused unless regular: opening a FIFO waits for a writer. */
+const char *case_file_not_regular(const char *path);
+
 #endif

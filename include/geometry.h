@@ -21,6 +21,20 @@ double shape_ray_length(const struct shape *s, int dim, const double *x, const d
  *  frames (may be NULL: every wall where the case puts it) holds the moving walls' frames now. */
 int walls_solid_at(const struct case_def *c, const struct frame *frames, const double *x, double *depth);
 
+/** What makes a polygon unusable as a shape. */
+enum polygon_fault {
+  POLYGON_SIMPLE = 0,        /* none: a simple polygon enclosing an area */
+  POLYGON_REPEATED_VERTEX,   /* two vertices are the same point */
+  POLYGON_EDGES_MEET,        /* two edges cross or touch (neighbouring edges: beyond their vertex) */
+  POLYGON_NO_AREA            /* the enclosed area is 0 */
+};
+
+/** Whether the polygon s (2D, n_vertices >= 3) is simple and encloses an area. Edge k joins
+ *  vertex k to vertex k + 1 (the last edge to vertex 0). Returns POLYGON_SIMPLE, or the first
+ *  fault found with the two vertices (POLYGON_REPEATED_VERTEX) or edges (POLYGON_EDGES_MEET)
+ *  concerned in *a < *b. */
+enum polygon_fault polygon_fault(const struct shape *s, int *a, int *b);
+
 /** Axis-aligned bounding box of s, grown by `margin` on every side. */
 void shape_bbox(const struct shape *s, int dim, double margin, double *lo, double *hi);
 

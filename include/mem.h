@@ -14,6 +14,13 @@ void *mem_calloc(size_t n, size_t size, const char *what);
 /** realloc(ptr, bytes) for `what`; never returns NULL (ptr is then no longer valid). */
 void *mem_realloc(void *ptr, size_t bytes, const char *what);
 
+/** A copy of the first at most n bytes of text, NUL-terminated, for `what`; never returns NULL. */
+char *mem_strndup(const char *text, size_t n, const char *what);
+
+/** End the process as a failed allocation of `bytes` for `what` (0: a library's own allocation
+ *  of unknown size failed). */
+_Noreturn void mem_fail(size_t bytes, const char *what);
+
 /** n * size for `what`, ending the process as an allocation failure when it overflows size_t. */
 size_t mem_bytes(size_t n, size_t size, const char *what);
 

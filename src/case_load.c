@@ -4,12 +4,17 @@
 #include "case_load.h"
 
 #include <errno.h>
+#include <fcntl.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
+#include "geometry.h"
+#include "mem.h"
 #include "yaml_tree.h"
 
 #define PATH_LEN 256
@@ -394,6 +399,29 @@ static int corners(const struct map *m, double *lo, double *hi) {
   return 0;
 }
 
+/* The polygon s read from the list seq at path is simple and encloses an area (a crossing,
+ * touching or degenerate one has no well-defined inside). */
+static int polygon_simple(struct ld *ld, const struct ynode *seq, const char *path, const struct shape *s) {
+  int a, b;
+  char pa[128], pb[128], qa[128], qb[128];
+  const double (*v)[2] = s->vertex;
+  int n = s->n_vertices;
+  switch (polygon_fault(s, &a, &b)) {
+  case POLYGON_REPEATED_VERTEX:
+    return fail(ld, seq, path, "vertices %d and %d are the same point %s, expected distinct "
+                "vertices", a, b, fmt_vec(pa, sizeof pa, v[a], 2));
+  case POLYGON_EDGES_MEET:
+    return fail(ld, seq, path, "edges %d (%s to %s) and %d (%s to %s) cross or touch, expected a "
+                "simple polygon (edge k joins vertices k and k + 1)", a, fmt_vec(pa, sizeof pa, v[a], 2),
+                fmt_vec(pb, sizeof pb, v[(a + 1) % n], 2), b, fmt_vec(qa, sizeof qa, v[b], 2),
+                fmt_vec(qb, sizeof qb, v[(b + 1) % n], 2));
+  case POLYGON_NO_AREA:
+    return fail(ld, seq, path, "encloses no area, expected a simple polygon with an inside");
+  default:
+    return 0;
+  }
+}
+
 static int polygon(const struct map *m, struct shape *s) {
   char path[PATH_LEN], ipath[PATH_LEN];
   const struct ynode *seq;
@@ -406,7 +434,7 @@ static int polygon(const struct map *m, struct shape *s) {
     join_index(ipath, path, i);
     if (vec_of(m->ld, seq->entries[i].value, ipath, 2, "an [x, y] pair", s->vertex[i])) return 1;
   }
-  return 0;
+  return polygon_simple(m->ld, seq, path, s);
 }
 
 /* The one shape (box, circle or polygon) of a fluid or wall item. */
@@ -923,16 +951,42 @@ int case_load_string(const char *text, size_t len, const char *source, int n_set
   return rc;
 }
 
+/* What a file of mode st_mode is when it is not a regular file ("a directory"), or NULL. */
+static const char *not_regular(mode_t mode) {
+  return S_ISREG(mode) ? NULL : S_ISDIR(mode) ? "a directory" : S_ISFIFO(mode) ? "a FIFO (named pipe)"
+         : S_ISCHR(mode) ? "a character device" : S_ISBLK(mode) ? "a block device"
+         : S_ISSOCK(mode) ? "a socket" : "not a regular file";
+}
+
+const char *case_file_not_regular(const char *path) {
+  struct stat st;
+  return stat(path, &st) == 0 ? not_regular(st.st_mode) : NULL;
+}
+
+/* The regular file at path opened for reading, or NULL with a message. Its type is asked before
+ * it is opened, and again of the open file (which may have been replaced in between): opening a
+ * FIFO would wait for a writer, reading a device might never end. */
+static FILE *open_regular(const char *path, char *err, size_t err_len) {
+  struct stat st;
+  const char *kind = NULL;
+  int fd = -1;
+  if (stat(path, &st) == 0 && !(kind = not_regular(st.st_mode)) &&
+      (fd = open(path, O_RDONLY | O_NONBLOCK | O_CLOEXEC)) >= 0 && fstat(fd, &st) == 0)
+    kind = not_regular(st.st_mode);
+  FILE *f = fd >= 0 && !kind ? fdopen(fd, "rb") : NULL;
+  if (f) return f;
+  if (kind) snprintf(err, err_len, "%s: cannot read the file: it is %s, expected a regular file", path, kind);
+  else snprintf(err, err_len, "%s: cannot open the file: %s", path, strerror(errno));
+  if (fd >= 0) close(fd);
+  return NULL;
+}
+
 /* The whole file at path (at most CASE_MAX_FILE_BYTES) in a new buffer, its size in *len; NULL
  * with a message on failure. */
 static char *read_file(const char *path, size_t *len, char *err, size_t err_len) {
-  FILE *f = fopen(path, "rb");
-  if (!f) {
-    snprintf(err, err_len, "%s: cannot open the file: %s", path, strerror(errno));
-    return NULL;
-  }
-  char *text = malloc(CASE_MAX_FILE_BYTES + 1);
-  if (!text) abort();
+  FILE *f = open_regular(path, err, err_len);
+  if (!f) return NULL;
+  char *text = mem_alloc(CASE_MAX_FILE_BYTES + 1, "the case file's text");
   *len = fread(text, 1, CASE_MAX_FILE_BYTES + 1, f);
   if (ferror(f))
     snprintf(err, err_len, "%s: cannot read the file: %s", path, strerror(errno));

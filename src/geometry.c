@@ -234,3 +234,54 @@ void lattice_node(const struct lattice *l, long n, double *x) {
     x[d] = l->origin[d] + ((double)(l->first[d] + idx[d]) + 0.5) * l->dx;
   for (int d = l->dim; d < 3; d++) x[d] = 0;
 }
+
+/* ---- polygon validity ---- */
+
+/* Sign of the turn a -> b -> c: 1 left, -1 right, 0 collinear. */
+static int turn(const double *a, const double *b, const double *c) {
+  double cross = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+  return (cross > 0) - (cross < 0);
+}
+
+/* Point p, collinear with segment [a, b], lies on it. */
+static int on_segment(const double *a, const double *b, const double *p) {
+  return p[0] >= fmin(a[0], b[0]) && p[0] <= fmax(a[0], b[0]) && p[1] >= fmin(a[1], b[1]) &&
+         p[1] <= fmax(a[1], b[1]);
+}
+
+/* The closed segments [a, b] and [c, d] have a point in common. */
+static int segments_meet(const double *a, const double *b, const double *c, const double *d) {
+  int t1 = turn(c, d, a), t2 = turn(c, d, b), t3 = turn(a, b, c), t4 = turn(a, b, d);
+  if (t1 * t2 < 0 && t3 * t4 < 0) return 1;
+  return (t1 == 0 && on_segment(c, d, a)) || (t2 == 0 && on_segment(c, d, b)) ||
+         (t3 == 0 && on_segment(a, b, c)) || (t4 == 0 && on_segment(a, b, d));
+}
+
+/* Edges [a, b] and [b, c], which share b, have more than b in common: c folds back onto [a, b]
+ * or a lies on [b, c]. */
+static int edges_fold(const double *a, const double *b, const double *c) {
+  return turn(a, b, c) == 0 && (on_segment(a, b, c) || on_segment(b, c, a));
+}
+
+/* Edges i < j of the n-gon v meet anywhere but at the vertex two neighbouring edges share. */
+static int edges_meet(const double (*v)[2], int n, int i, int j) {
+  const double *a = v[i], *b = v[(i + 1) % n], *c = v[j], *d = v[(j + 1) % n];
+  if (j == i + 1) return edges_fold(a, b, d);
+  if (i == 0 && j == n - 1) return edges_fold(c, a, b);
+  return segments_meet(a, b, c, d);
+}
+
+enum polygon_fault polygon_fault(const struct shape *s, int *a, int *b) {
+  int n = s->n_vertices;
+  const double (*v)[2] = s->vertex;
+  for (*a = 0; *a < n; ++*a)
+    for (*b = *a + 1; *b < n; ++*b)
+      if (v[*a][0] == v[*b][0] && v[*a][1] == v[*b][1]) return POLYGON_REPEATED_VERTEX;
+  for (*a = 0; *a < n; ++*a)
+    for (*b = *a + 1; *b < n; ++*b)
+      if (edges_meet(v, n, *a, *b)) return POLYGON_EDGES_MEET;
+  double area2 = 0;
+  for (int k = 0; k < n; k++)
+    area2 += v[k][0] * v[(k + 1) % n][1] - v[(k + 1) % n][0] * v[k][1];
+  return area2 == 0 ? POLYGON_NO_AREA : POLYGON_SIMPLE;
+}

@@ -5,10 +5,9 @@
 #include <string.h>
 #include "case_load.h"
 #include "engine.h"
+#include "mem.h"
 #include "preflight.h"
 #include "signal_stop.h"
-
-#define MAX_SETS 256
 
 static const char *usage =
     "usage:\n"
@@ -28,20 +27,43 @@ struct args {
   int restart;                /* --restart given */
   const char *restart_path;   /* its FILE, or NULL for OUTDIR/checkpoint.h5 */
   int n_sets;
-  char *sets[MAX_SETS];
+  char **sets;                /* the --set values, room for every argument */
 };
 
-/* Parse argv. Returns 0, or 1 with a message in err. */
+/* The argument after option argv[k] (-o, --set), or NULL with a message in err when there is none. */
+static const char *option_value(int argc, char **argv, int k, char *err, size_t len) {
+  if (k + 1 < argc) return argv[k + 1];
+  snprintf(err, len, "%s: needs a value after it, none given\n%s", argv[k], usage);
+  return NULL;
+}
+
+/* -o DIR: one, not empty. Returns 0, or 1 with a message in err. */
+static int set_outdir(struct args *a, const char *dir, char *err, size_t len) {
+  if (!dir[0]) return snprintf(err, len, "-o: got an empty folder name, expected a path (-o . for the current folder)"), 1;
+  if (a->outdir)
+    return snprintf(err, len, "-o: given twice ('%s' and '%s'), expected one output folder", a->outdir, dir), 1;
+  a->outdir = dir;
+  return 0;
+}
+
+/* Parse argv. Returns 0, or 1 with a message in err. a->sets is allocated (free it). */
 static int parse_args(int argc, char **argv, struct args *a, char *err, size_t len) {
   memset(a, 0, sizeof(*a));
+  a->sets = mem_calloc((size_t)argc, sizeof *a->sets, "the --set list");
   if (argc < 2) return snprintf(err, len, "no command given\n%s", usage), 1;
   a->command = argv[1];
   for (int k = 2; k < argc; k++) {
-    if (!strcmp(argv[k], "-o") && k + 1 < argc) a->outdir = argv[++k];
-    else if (!strcmp(argv[k], "--set") && k + 1 < argc && a->n_sets < MAX_SETS) a->sets[a->n_sets++] = argv[++k];
-    else if (!strcmp(argv[k], "--restart")) {
+    if (!strcmp(argv[k], "-o") || !strcmp(argv[k], "--set")) {
+      const char *value = option_value(argc, argv, k++, err, len);
+      if (!value) return 1;
+      if (argv[k - 1][1] == '-') a->sets[a->n_sets++] = argv[k];
+      else if (set_outdir(a, value, err, len)) return 1;
+    } else if (!strcmp(argv[k], "--restart")) {
+      if (a->restart) return snprintf(err, len, "--restart: given twice, expected it once"), 1;
       a->restart = 1;   /* FILE follows when the case file is already named */
       if (a->case_path && k + 1 < argc && argv[k + 1][0] != '-') a->restart_path = argv[++k];
+      if (a->restart_path && !a->restart_path[0])
+        return snprintf(err, len, "--restart: got an empty file name, expected a checkpoint file"), 1;
     }
     else if (argv[k][0] != '-' && !a->case_path) a->case_path = argv[k];
     else return snprintf(err, len, "unexpected argument '%s'\n%s", argv[k], usage), 1;
@@ -49,8 +71,8 @@ static int parse_args(int argc, char **argv, struct args *a, char *err, size_t l
   if (strcmp(a->command, "run") && strcmp(a->command, "check"))
     return snprintf(err, len, "unknown command '%s'\n%s", a->command, usage), 1;
   if (!a->case_path) return snprintf(err, len, "%s needs a case file\n%s", a->command, usage), 1;
-  if (a->restart && strcmp(a->command, "run"))
-    return snprintf(err, len, "--restart: only with run\n%s", usage), 1;
+  if ((a->restart || a->outdir) && strcmp(a->command, "run"))
+    return snprintf(err, len, "%s: only with run\n%s", a->restart ? "--restart" : "-o", usage), 1;
   return 0;
 }
 
@@ -123,17 +145,35 @@ static int supported(const struct case_def *c, char *err, size_t len) {
   }
 }
 
-static int run_case(const struct case_def *c, const struct args *a) {
-  char defdir[CASE_MAX_NAME + 8], restart[1200];
-  snprintf(defdir, sizeof(defdir), "runs/%s", c->name);
-  const char *outdir = a->outdir ? a->outdir : defdir;
-  snprintf(restart, sizeof(restart), "%s/checkpoint.h5", outdir);
-  if (preflight_run(c, outdir, MPI_COMM_WORLD)) return 1;
+/* dir/name in a new string (free it). */
+static char *path_join(const char *dir, const char *name) {
+  size_t n = strlen(dir) + strlen(name) + 2;
+  char *path = mem_alloc(n, "a file path");
+  snprintf(path, n, "%s/%s", dir, name);
+  return path;
+}
+
+/* Set up and run case c into outdir (from the checkpoint restart unless NULL). The stop handler is
+ * installed here, after the case is loaded and checked: before, SIGINT and SIGTERM end the process
+ * (nothing is written yet); from here they end the run with a checkpoint. */
+static int start_run(const struct case_def *c, const char *outdir, const char *restart) {
+  signal_stop_install();
   struct engine e;
-  int status = engine_init(&e, c, outdir, !a->restart ? NULL : a->restart_path ? a->restart_path : restart,
-                           MPI_COMM_WORLD);
+  int status = engine_init(&e, c, outdir, restart, MPI_COMM_WORLD);
   if (!status) status = engine_run(&e);
   engine_free(&e);
+  return status;
+}
+
+/* The run command: the checks of preflight_run, then the run into -o (default runs/<name>). */
+static int run_case(const struct case_def *c, const struct args *a) {
+  char *defdir = path_join("runs", c->name), *checkpoint = NULL;
+  const char *outdir = a->outdir ? a->outdir : defdir;
+  int status = preflight_run(c, outdir, a->restart_path, MPI_COMM_WORLD);
+  if (!status && a->restart && !a->restart_path) checkpoint = path_join(outdir, "checkpoint.h5");
+  if (!status) status = start_run(c, outdir, a->restart_path ? a->restart_path : checkpoint);
+  free(checkpoint);
+  free(defdir);
   return status;
 }
 
@@ -142,7 +182,6 @@ int main(int argc, char **argv) {
   if (argc == 2 && !strcmp(argv[1], "--version")) return printf("mpsph %s\n", MPSPH_VERSION), 0;
   MPI_Init(&argc, &argv);
   setvbuf(stdout, NULL, _IOLBF, 0);   /* progress shows up in batch logs as it is printed */
-  signal_stop_install();
   int rank, status;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   struct args a;
@@ -153,6 +192,7 @@ int main(int argc, char **argv) {
   if (!status) status = supported(&c, err, sizeof(err));
   if (status && rank == 0) fprintf(stderr, "mpsph: %s\n", err);
   if (!status) status = !strcmp(a.command, "check") ? (rank == 0 ? preflight_check(&c) : 0) : run_case(&c, &a);
+  free(a.sets);
   MPI_Finalize();
   return status;
 }

@@ -5,34 +5,43 @@
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
-/* Report the failed allocation of `bytes` for `what` and end the process with status 3. */
-static void out_of_memory(size_t bytes, const char *what) {
-  fprintf(stderr, "mpsph: out of memory: %s (%zu bytes)\n", what, bytes);
+_Noreturn void mem_fail(size_t bytes, const char *what) {
+  if (bytes) fprintf(stderr, "mpsph: out of memory: %s (%zu bytes)\n", what, bytes);
+  else fprintf(stderr, "mpsph: out of memory: %s (allocated inside a library)\n", what);
   fflush(stderr);
   exit(3);
 }
 
 size_t mem_bytes(size_t n, size_t size, const char *what) {
-  if (size && n > SIZE_MAX / size) out_of_memory(SIZE_MAX, what);
+  if (size && n > SIZE_MAX / size) mem_fail(SIZE_MAX, what);
   return n * size;
 }
 
 void *mem_alloc(size_t bytes, const char *what) {
   void *p = malloc(bytes ? bytes : 1);
-  if (!p) out_of_memory(bytes, what);
+  if (!p) mem_fail(bytes, what);
   return p;
 }
 
 void *mem_calloc(size_t n, size_t size, const char *what) {
   size_t bytes = mem_bytes(n, size, what);
   void *p = calloc(bytes ? n : 1, bytes ? size : 1);
-  if (!p) out_of_memory(bytes, what);
+  if (!p) mem_fail(bytes, what);
   return p;
 }
 
 void *mem_realloc(void *ptr, size_t bytes, const char *what) {
   void *p = realloc(ptr, bytes ? bytes : 1);
-  if (!p) out_of_memory(bytes, what);
+  if (!p) mem_fail(bytes, what);
   return p;
+}
+
+char *mem_strndup(const char *text, size_t n, const char *what) {
+  size_t len = strnlen(text, n);
+  char *copy = mem_alloc(len + 1, what);
+  memcpy(copy, text, len);
+  copy[len] = '\0';
+  return copy;
 }

@@ -7,6 +7,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 #include "case_load.h"
 #include "init.h"
 #include "kernel.h"
@@ -15,6 +16,13 @@
 
 #define COUNT_GUARD 10.0   /* a bound needing this many times the memory available: not counted */
 #define ERR_LEN 1024
+/* Open MPI's MPI-IO (sharedfp component lockedfile) writes "<file>.locktest.<rank>" into a buffer
+ * of this many bytes at every MPI_File_open, with sprintf: a longer file path aborts the process. */
+#define MPIIO_NAME_BUFFER 256
+#define QUOTED(x) #x
+#define DIGITS_OF(x) QUOTED(x)   /* the value of macro x as a string literal */
+#define MPIIO_SUFFIX ".locktest."
+#define LONGEST_OUTPUT_FILE "unstable_last_good.h5.tmp"   /* the longest name a run writes */
 
 /* The particle count of a case for the memory estimate: exact, or the bound. */
 struct sizing {
@@ -96,12 +104,45 @@ static int verdict(int status, const char *err, int rank, MPI_Comm comm) {
   return status;
 }
 
-int preflight_run(const struct case_def *c, const char *outdir, MPI_Comm comm) {
+/* The longest file path MPI-IO takes on n_ranks ranks (the rank's digits end the name). */
+static int path_limit(int n_ranks) {
+  int digits = 1;
+  for (int r = n_ranks - 1; r >= 10; r /= 10) digits++;
+  return MPIIO_NAME_BUFFER - 1 - (int)strlen(MPIIO_SUFFIX) - digits;
+}
+
+/* 1 with a message in err when the output folder's files, or the checkpoint to restart from
+ * (NULL: none named), have paths longer than MPI-IO takes on n_ranks ranks, or that checkpoint
+ * is not a regular file (MPI-IO would wait forever on a FIFO). */
+static int paths_unusable(const char *outdir, const char *restart, int n_ranks, char *err, size_t len) {
+  int limit = path_limit(n_ranks);
+  size_t folder = strlen(outdir), longest = folder + 1 + strlen(LONGEST_OUTPUT_FILE);
+  const char *why = "Open MPI's MPI-IO writes '<file>" MPIIO_SUFFIX "<rank>' into a buffer of "
+                    DIGITS_OF(MPIIO_NAME_BUFFER) " bytes";
+  if (longest > (size_t)limit)
+    return snprintf(err, len, "-o: the output folder has %zu characters, at most %zu allowed on %d rank%s: "
+                    "the path of its file %s would have %zu, above the %d of a file's path (%s); "
+                    "use a shorter folder name (a relative path or a symbolic link)", folder,
+                    (size_t)limit - 1 - strlen(LONGEST_OUTPUT_FILE), n_ranks, n_ranks == 1 ? "" : "s",
+                    LONGEST_OUTPUT_FILE, longest, limit, why), 1;
+  const char *kind = restart ? case_file_not_regular(restart) : NULL;
+  if (kind)
+    return snprintf(err, len, "--restart: cannot read '%s': it is %s, expected a checkpoint file",
+                    restart, kind), 1;
+  if (restart && strlen(restart) > (size_t)limit)
+    return snprintf(err, len, "--restart: the checkpoint's path has %zu characters, at most %d allowed on "
+                    "%d rank%s (%s); use a shorter path (a relative path or a symbolic link)",
+                    strlen(restart), limit, n_ranks, n_ranks == 1 ? "" : "s", why), 1;
+  return 0;
+}
+
+int preflight_run(const struct case_def *c, const char *outdir, const char *restart, MPI_Comm comm) {
   int rank, n_ranks, per_node, status = 0;
   char err[ERR_LEN];
   MPI_Comm_rank(comm, &rank);
   MPI_Comm_size(comm, &n_ranks);
-  if (rank == 0) status = outdir_probe(outdir, err, sizeof err);
+  if (rank == 0) status = paths_unusable(outdir, restart, n_ranks, err, sizeof err);
+  if (rank == 0 && !status) status = outdir_probe(outdir, err, sizeof err);
   if (verdict(status, err, rank, comm)) return 1;
   double available = available_per_rank(comm, &per_node);
   if (rank == 0) status = memory_verdict(c, n_ranks, available, per_node, err, sizeof err);

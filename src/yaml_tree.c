@@ -1,7 +1,9 @@
 /* yaml_tree.c — build a node tree from libyaml parser events; apply key.path=value overrides. */
 #include "yaml_tree.h"
+#include "mem.h"
 
 #include <stdarg.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -18,14 +20,6 @@ struct reader {
   size_t err_len;
 };
 
-static void *must(void *p) {
-  if (!p) {
-    fputs("mpsph: out of memory while reading YAML\n", stderr);
-    abort();
-  }
-  return p;
-}
-
 /* Write "<source>:<line>: [<path>: ]<message>" into err. */
 static void say(char *err, size_t err_len, const char *source, int line, const char *path,
                 const char *fmt, ...) {
@@ -39,9 +33,9 @@ static void say(char *err, size_t err_len, const char *source, int line, const c
 }
 
 static struct ynode *node_new(enum ynode_kind kind, const char *source, int line) {
-  struct ynode *n = must(calloc(1, sizeof *n));
+  struct ynode *n = mem_calloc(1, sizeof *n, "YAML node");
   n->kind = kind;
-  n->source = must(strdup(source));
+  n->source = mem_strndup(source, SIZE_MAX, "YAML source name");
   n->line = line;
   return n;
 }
@@ -49,7 +43,7 @@ static struct ynode *node_new(enum ynode_kind kind, const char *source, int line
 static struct yentry *append(struct ynode *n, char *key, int key_line, struct ynode *value) {
   if (n->n == n->cap) {
     n->cap = n->cap ? 2 * n->cap : 4;
-    n->entries = must(realloc(n->entries, (size_t)n->cap * sizeof *n->entries));
+    n->entries = mem_realloc(n->entries, mem_bytes((size_t)n->cap, sizeof *n->entries, "YAML map"), "YAML map");
   }
   n->entries[n->n] = (struct yentry){key, key_line, value};
   return &n->entries[n->n++];
@@ -97,6 +91,28 @@ static void child_path(char *out, const char *parent, const char *key) {
   if (k >= YTREE_PATH_LEN) out[YTREE_PATH_LEN - 1] = '\0';
 }
 
+/* Refuse an anchor (&name) or a tag (!!str, !x) on the node starting with event ev: an anchor is
+ * only of use to an alias, which is refused, and a tag would be ignored. Returns 0, or 1 with a
+ * message. */
+static int decorated(struct reader *rd, const yaml_event_t *ev, const char *path, int line) {
+  const yaml_char_t *anchor = ev->type == YAML_SCALAR_EVENT ? ev->data.scalar.anchor
+                              : ev->type == YAML_SEQUENCE_START_EVENT ? ev->data.sequence_start.anchor
+                              : ev->type == YAML_MAPPING_START_EVENT ? ev->data.mapping_start.anchor : NULL;
+  const yaml_char_t *tag = ev->type == YAML_SCALAR_EVENT ? ev->data.scalar.tag
+                           : ev->type == YAML_SEQUENCE_START_EVENT ? ev->data.sequence_start.tag
+                           : ev->type == YAML_MAPPING_START_EVENT ? ev->data.mapping_start.tag : NULL;
+  if (anchor)
+    say(rd->err, rd->err_len, rd->source, line, path, "got the anchor &%s, expected none "
+        "(anchors and aliases are not supported)", (const char *)anchor);
+  else if (tag) {
+    const char *name = (const char *)tag, *core = "tag:yaml.org,2002:";   /* written !!name */
+    int is_core = strncmp(name, core, strlen(core)) == 0;
+    say(rd->err, rd->err_len, rd->source, line, path, "got the tag %s%s, expected none "
+        "(tags are not supported)", is_core ? "!!" : "", is_core ? name + strlen(core) : name);
+  }
+  return anchor || tag;
+}
+
 static struct ynode *parse_node(struct reader *rd, yaml_event_t *ev, const char *path, int depth);
 
 static int read_item(struct reader *rd, struct ynode *seq, yaml_event_t *ev, const char *path,
@@ -120,6 +136,7 @@ static int read_pair(struct reader *rd, struct ynode *map, yaml_event_t *ev, con
   const char *key = (const char *)ev->data.scalar.value;
   char cpath[YTREE_PATH_LEN];
   child_path(cpath, path, key);
+  if (decorated(rd, ev, cpath, line)) return 0;
   if (ytree_get(map, key)) {
     say(rd->err, rd->err_len, rd->source, line, cpath, "duplicate key, expected each key once");
     return 0;
@@ -128,7 +145,7 @@ static int read_pair(struct reader *rd, struct ynode *map, yaml_event_t *ev, con
   if (!next_event(rd, &vev, cpath)) return 0;
   struct ynode *child = parse_node(rd, &vev, cpath, depth + 1);
   yaml_event_delete(&vev);
-  if (child) append(map, must(strdup(key)), line, child);
+  if (child) append(map, mem_strndup(key, SIZE_MAX, "YAML key"), line, child);
   return child != NULL;
 }
 
@@ -159,10 +176,11 @@ static struct ynode *parse_children(struct reader *rd, struct ynode *n, const ch
 static struct ynode *parse_node(struct reader *rd, yaml_event_t *ev, const char *path, int depth) {
   int line = event_line(rd, ev->start_mark);
   struct ynode *n;
+  if (decorated(rd, ev, path, line)) return NULL;
   switch (ev->type) {
   case YAML_SCALAR_EVENT:
     n = node_new(YNODE_SCALAR, rd->source, line);
-    n->text = must(strdup((const char *)ev->data.scalar.value));
+    n->text = mem_strndup((const char *)ev->data.scalar.value, SIZE_MAX, "YAML scalar");
     n->plain = ev->data.scalar.style == YAML_PLAIN_SCALAR_STYLE;
     return n;
   case YAML_SEQUENCE_START_EVENT:
@@ -221,10 +239,27 @@ static struct ynode *read_stream(struct reader *rd, const char *path) {
   return NULL;
 }
 
+/* The encoding, UTF-16 or UTF-32, whose byte-order mark text starts with, or NULL. libyaml would
+ * read such text; without a mark it reads UTF-8 and refuses invalid sequences itself. */
+static const char *foreign_bom(const char *text, size_t len) {
+  static const struct { const char *bytes, *name; size_t n; } boms[] = {
+      {"\xff\xfe\0\0", "UTF-32LE", 4}, {"\0\0\xfe\xff", "UTF-32BE", 4},
+      {"\xff\xfe", "UTF-16LE", 2}, {"\xfe\xff", "UTF-16BE", 2}};
+  for (size_t k = 0; k < sizeof boms / sizeof boms[0]; k++)
+    if (len >= boms[k].n && memcmp(text, boms[k].bytes, boms[k].n) == 0) return boms[k].name;
+  return NULL;
+}
+
 static struct ynode *parse_text(const char *text, size_t len, const char *source, int line,
                                 const char *path, char *err, size_t err_len) {
+  const char *bom = foreign_bom(text, len);
+  if (bom) {
+    say(err, err_len, source, line > 0 ? line : 1, path, "the text is %s (it starts with its "
+        "byte-order mark), expected UTF-8", bom);
+    return NULL;
+  }
   struct reader rd = {.source = source, .fixed_line = line, .err = err, .err_len = err_len};
-  if (!yaml_parser_initialize(&rd.parser)) must(NULL);
+  if (!yaml_parser_initialize(&rd.parser)) mem_fail(0, "libyaml parser");
   yaml_parser_set_input_string(&rd.parser, (const unsigned char *)text, len);
   struct ynode *root = read_stream(&rd, path);
   yaml_parser_delete(&rd.parser);
@@ -245,7 +280,7 @@ static struct yentry *map_entry(struct ynode *map, const char *comp, size_t len,
     const char *key = map->entries[i].key;
     if (strlen(key) == len && strncmp(key, comp, len) == 0) return &map->entries[i];
   }
-  return append(map, must(strndup(comp, len)), line, NULL);
+  return append(map, mem_strndup(comp, len, "YAML key"), line, NULL);
 }
 
 /* The entry at index comp[0..len) of a list (index n appends), or NULL if not an index. */
@@ -289,7 +324,7 @@ int ytree_set(struct ynode *root, const char *assignment, int line, char *err, s
     say(err, err_len, "--set", line, assignment, "missing '=', expected key.path=value");
     return 1;
   }
-  char *path = must(strndup(assignment, (size_t)(eq - assignment)));
+  char *path = mem_strndup(assignment, (size_t)(eq - assignment), "--set key");
   struct ynode *value = parse_text(eq + 1, strlen(eq + 1), "--set", line, path, err, err_len);
   struct yentry *e = value ? walk(root, path, line, err, err_len) : NULL;
   if (e) {

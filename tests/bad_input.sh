@@ -38,8 +38,19 @@ refuses binary 'binary\.yaml:1: malformed YAML' -- build/mpsph run "$tmp/binary.
 refuses missing-file 'missing\.yaml: cannot open the file: No such file' -- \
   build/mpsph run "$tmp/missing.yaml" -o "$tmp/missing-file"
 mkdir "$tmp/folder.yaml"
-refuses unreadable 'folder\.yaml: cannot read the file: Is a directory' -- \
+refuses unreadable 'folder\.yaml: cannot read the file: it is a directory, expected a regular file' -- \
   build/mpsph run "$tmp/folder.yaml" -o "$tmp/unreadable"
+# YAML that the loader would otherwise read without saying: an unused anchor, a tag, UTF-16. (The
+# new refusals below stop after one step if they go missing.)
+sed 's/^dimension: 2/dimension: \&d 2/' "$case" > "$tmp/anchor.yaml"
+refuses anchor 'anchor\.yaml:3: dimension: got the anchor &d, expected none' -- \
+  build/mpsph run "$tmp/anchor.yaml" -o "$tmp/anchor" --set time.max_steps=1
+sed 's/^dimension: 2/dimension: !!str 2/' "$case" > "$tmp/tag.yaml"
+refuses tag 'tag\.yaml:3: dimension: got the tag !!str, expected none' -- \
+  build/mpsph run "$tmp/tag.yaml" -o "$tmp/tag" --set time.max_steps=1
+iconv -f UTF-8 -t UTF-16 "$case" > "$tmp/utf16.yaml"
+refuses utf16 'utf16\.yaml:1: the text is UTF-16(LE|BE) \(it starts with its byte-order mark\), expected UTF-8' -- \
+  build/mpsph run "$tmp/utf16.yaml" -o "$tmp/utf16" --set time.max_steps=1
 sed 's/^physics: {delta/physics: {deltaa/' "$case" > "$tmp/unknown.yaml"
 refuses unknown-key 'unknown\.yaml:19: physics\.deltaa: unknown key, allowed keys: delta, ' -- \
   build/mpsph run "$tmp/unknown.yaml" -o "$tmp/unknown-key"
@@ -90,6 +101,41 @@ refuses probe-outside 'probes\.0\.position: got \[0\.5, 3\] outside the domain' 
   run probe-outside --set 'probes.0.position=[0.5, 3]'
 refuses wall-layers 'walls\.0: its 4 ghost layers .* outside the domain' -- \
   run wall-layers --set 'domain.min=[-0.05,-0.05]'
+refuses polygon-crossing 'fluids\.0\.polygon: edges 0 \(\[0, 0\] to \[1, 1\]\) and 2 \(\[1, 0\] to \[0, 1\]\) cross or touch' -- \
+  run polygon-crossing --set time.max_steps=1 --set 'fluids.0={phase: water, polygon: [[0, 0], [1, 1], [1, 0], [0, 1]]}'
+refuses polygon-flat 'fluids\.0\.polygon: edges 0 .* cross or touch' -- \
+  run polygon-flat --set time.max_steps=1 --set 'fluids.0={phase: water, polygon: [[0, 0], [0.5, 0], [1, 0]]}'
+refuses polygon-repeated 'walls\.0\.polygon: vertices 1 and 3 are the same point \[1, 0\]' -- \
+  run polygon-repeated --set time.max_steps=1 --set 'walls.0={polygon: [[0, 0], [1, 0], [1, 1.2], [1, 0], [0, 1.2]]}'
+# The command line's paths. An output folder whose files' paths MPI-IO cannot take (Open MPI's
+# lockedfile component aborts with "buffer overflow detected" beyond 244 characters on 1 rank).
+long="$tmp/long-outdir/$(printf 'd%.0s' {1..200})/$(printf 'e%.0s' {1..200})/$(printf 'f%.0s' {1..200})"
+long="$long/$(printf 'g%.0s' {1..200})/$(printf 'h%.0s' {1..200})"
+long=${long:0:1000}
+refuses long-outdir '-o: the output folder has 1000 characters, at most 218 allowed on 1 rank: .* unstable_last_good\.h5\.tmp would have 1026' -- \
+  build/mpsph run "$case" -o "$long" --set time.max_steps=1
+refuses long-restart "--restart: the checkpoint's path has 1000 characters, at most 244 allowed on 1 rank" -- \
+  run long-restart --restart "$long"
+# -o '' wrote every file into /: the bad time.end keeps a build without the refusal from running.
+mkfifo "$tmp/fifo.h5"   # MPI-IO waited for a writer, and SIGTERM did not end the wait
+refuses restart-fifo "--restart: cannot read '$tmp/fifo\.h5': it is a FIFO \(named pipe\), expected a checkpoint file" -- \
+  timeout -k 2 20 build/mpsph run "$case" -o "$tmp/restart-fifo" --restart "$tmp/fifo.h5"
+refuses empty-outdir '-o: got an empty folder name, expected a path' -- \
+  build/mpsph run "$case" -o '' --set time.end=-1
+refuses two-outdirs "-o: given twice \('$tmp/two-outdirs' and '$tmp/two-outdirs-b'\)" -- \
+  run two-outdirs -o "$tmp/two-outdirs-b" --set time.max_steps=1
+# The folder of 218 characters, the longest allowed on 1 rank, takes every file a run writes: the
+# unstable run's unstable_last_good.h5 has the longest path.
+edge="$tmp/edge/$(printf 'x%.0s' {1..250})"
+edge=${edge:0:218}
+out=$(build/mpsph run "$case" -o "$edge" --set 'gravity=[0, -1e308]' 2>&1)
+status=$?
+if [ "$status" -ne 2 ] || [ ! -s "$edge/unstable_last_good.h5" ]; then
+  echo "FAIL edge-outdir: status $status (want 2, with $edge/unstable_last_good.h5), output: $out"
+  fail=1
+else
+  echo "ok edge-outdir: an unstable run into a folder of ${#edge} characters wrote its files"
+fi
 # The machine: ranks, output folder, memory.
 refuses ranks 'the domain has 1 cells but 3 ranks were started' -- \
   scripts/mpirun -n 3 build/mpsph run "$case" -o "$tmp/ranks" --set 'walls=[]' \

@@ -30,4 +30,22 @@ expect 0 "# particles: up to 1e\+10 .*not counted" -- \
 expect 1 "usage" -- build/mpsph
 expect 1 "unknown command" -- build/mpsph frobnicate "$case"
 expect 1 "unexpected argument '--frobnicate'" -- build/mpsph check "$case" --frobnicate
+expect 1 "^mpsph: -o: needs a value after it, none given" -- build/mpsph run "$case" -o
+expect 1 "^mpsph: --set: needs a value after it, none given" -- build/mpsph check "$case" --set
+expect 1 "^mpsph: --restart: got an empty file name" -- build/mpsph run "$case" --restart ''
+expect 1 "^mpsph: -o: only with run" -- build/mpsph check "$case" -o "$tmp/check-out"
+# As many --set as the command line holds (here 300; the last one wins).
+sets=()
+for k in $(seq 300); do sets+=(--set "time.cfl=0.$((k % 9 + 1))"); done
+check_300_sets() { build/mpsph check "$case" "${sets[@]}"; }
+expect 0 "^  cfl: 0\.4$" -- check_300_sets
+# A case path that is not a regular file is refused before it is opened: opening a FIFO would wait
+# for a writer (and SIGTERM would not end the wait).
+mkfifo "$tmp/fifo.yaml"
+expect 1 "^mpsph: $tmp/fifo\.yaml: cannot read the file: it is a FIFO \(named pipe\), expected a regular file" -- \
+  timeout -k 2 10 build/mpsph check "$tmp/fifo.yaml"
+expect 1 "^mpsph: /dev/zero: cannot read the file: it is a character device" -- timeout -k 2 10 build/mpsph check /dev/zero
+# SIGTERM ends a check that takes long (counting 4e8 particles, about 13 s on one core) at once:
+# timeout's status is 124 when the signal ended it, 137 when it had to kill it 10 s later.
+expect 124 "^$" -- timeout -k 10 1 env MPSPH_MEMORY_AVAILABLE=1e12 build/mpsph check "$case" --set resolution.dx=0.00005
 exit $fail

@@ -178,6 +178,14 @@ static void test_shape_errors(void) {
                "case.yaml:10: fluids.0.polygon: got a list of 2 items", "3 to 64 [x, y] vertices");
   expect_error(variant(12, "  - {name: p0, position: [0.5, 0]}\n  - {name: p0, position: [0, 0]}"),
                0, NULL, "case.yaml:13: probes.1.name: got 'p0' a second time", "unique names");
+  expect_error(variant(10, "  - {phase: water, polygon: [[0, 0], [1, 0.5], [1, 0], [0, 0.5]]}"), 0, NULL,
+               "case.yaml:10: fluids.0.polygon: edges 0 ([0, 0] to [1, 0.5]) and 2 ([1, 0] to [0, 0.5]) "
+               "cross or touch", "expected a simple polygon");
+  expect_error(variant(10, "  - {phase: water, polygon: [[0, 0], [0.5, 0.25], [1, 0.5]]}"), 0, NULL,
+               "case.yaml:10: fluids.0.polygon: edges 0 ([0, 0] to [0.5, 0.25]) and 2", "cross or touch");
+  expect_error(variant(10, "  - {phase: water, polygon: [[0, 0], [1, 0], [1, 0.5], [0, 0]]}"), 0, NULL,
+               "case.yaml:10: fluids.0.polygon: vertices 0 and 3 are the same point [0, 0]",
+               "expected distinct vertices");
 }
 
 static void test_malformed(void) {
@@ -185,12 +193,22 @@ static void test_malformed(void) {
                "expected valid YAML");
   expect_error(variant(13, "  bad: indent"), 0, NULL, "case.yaml:13: probes: malformed YAML", "YAML");
   expect_error(variant(13, "gravity: *g"), 0, NULL, "case.yaml:", "alias");
+  expect_error(variant(13, "gravity: &g [0, -9.81]"), 0, NULL, "case.yaml:13: gravity: got the anchor &g",
+               "expected none (anchors and aliases are not supported)");
+  expect_error(variant(13, "&k gravity: [0, -9.81]"), 0, NULL, "case.yaml:13: gravity: got the anchor &k",
+               "not supported");
+  expect_error(variant(3, "resolution: !!map {dx: 0.02}"), 0, NULL, "case.yaml:3: resolution: got the tag !!map",
+               "expected none (tags are not supported)");
+  expect_error(variant(3, "resolution: {dx: !local 0.02}"), 0, NULL,
+               "case.yaml:3: resolution.dx: got the tag !local", "not supported");
+  const char *tagged[] = {"time.end=!!float 2"};
+  expect_error(variant(0, ""), 1, tagged, "--set:1: time.end: got the tag !!float", "not supported");
   expect_error(variant(1, "name: \"two\\nlines\""), 0, NULL, "case.yaml:1: name: ",
                "got the string \"two\\nlines\", expected a name");
   struct case_def c;
   CHECK(case_load("/nonexistent/case.yaml", 0, NULL, &c, err, sizeof err) == 1 &&
             strstr(err, "/nonexistent/case.yaml: cannot open") != NULL, "missing file: %s", err);
-  CHECK(case_load(dir, 0, NULL, &c, err, sizeof err) == 1 && strstr(err, "cannot read the file"),
+  CHECK(case_load(dir, 0, NULL, &c, err, sizeof err) == 1 && strstr(err, "cannot read the file: it is a directory, expected a regular file"),
         "a directory: %s", err);
 }
 
@@ -205,6 +223,18 @@ static void test_string(void) {
             strstr(err, "memory:") != NULL, "only the given length is read: %s", err);
   CHECK(case_load_string("name: a\0b\n", 11, "memory", 0, NULL, &c, err, sizeof err) == 1 &&
             strstr(err, "memory:1: malformed YAML") != NULL, "NUL byte: %s", err);
+  const char utf16le[] = "\xff\xfen\0a\0m\0e\0:\0 \0a\0\n\0", utf32be[] = "\0\0\xfe\xff\0\0\0n";
+  CHECK(case_load_string(utf16le, sizeof utf16le - 1, "memory", 0, NULL, &c, err, sizeof err) == 1 &&
+            strstr(err, "memory:1: the text is UTF-16LE (it starts with its byte-order mark), expected UTF-8"),
+        "UTF-16: %s", err);
+  CHECK(case_load_string(utf32be, sizeof utf32be - 1, "memory", 0, NULL, &c, err, sizeof err) == 1 &&
+            strstr(err, "memory:1: the text is UTF-32BE"), "UTF-32: %s", err);
+  char bom8[4096];
+  snprintf(bom8, sizeof bom8, "\xef\xbb\xbf%s", text);
+  CHECK(case_load_string(bom8, strlen(bom8), "memory", 0, NULL, &c, err, sizeof err) == 0,
+        "UTF-8 with its byte-order mark loads: %s", err);
+  CHECK(case_load_string("name: caf\xe9\n", 10, "memory", 0, NULL, &c, err, sizeof err) == 1 &&
+            strstr(err, "memory:1: name: malformed YAML"), "Latin-1: %s", err);
 }
 
 static void test_set(void) {

@@ -1,6 +1,6 @@
 /* test_geometry.c — shapes against analytic values: inside tests, nearest boundary points
  * (mirror points of the wall ghosts), ray lengths (hydrostatic start), lattice cover. A box and
- * the same rectangle as a polygon must agree. */
+ * the same rectangle as a polygon must agree; polygon faults (crossing, touching, degenerate). */
 #include <math.h>
 #include "check.h"
 #include "geometry.h"
@@ -92,7 +92,42 @@ static void check_walls_solid(void) {
   CHECK(walls_solid_at(&c, NULL, out, &depth) == -1, "no walls: fluid everywhere");
 }
 
+/* The fault of the polygon with the n vertices xy (x0, y0, x1, y1, ...) and what it names in *a, *b. */
+static enum polygon_fault fault_of(int n, const double *xy, int *a, int *b) {
+  struct shape s = {.kind = SHAPE_POLYGON, .n_vertices = n};
+  for (int k = 0; k < n; k++) {
+    s.vertex[k][0] = xy[2 * k];
+    s.vertex[k][1] = xy[2 * k + 1];
+  }
+  *a = *b = -1;
+  return polygon_fault(&s, a, b);
+}
+
+/* Simple polygons (either orientation, concave) pass; crossing, touching, folded, repeated and
+ * flat ones are named with the edges or vertices at fault. */
+static void check_polygon_faults(void) {
+  int a, b;
+  const double square[] = {0, 0, 1, 0, 1, 1, 0, 1}, clockwise[] = {0, 0, 0, 1, 1, 1, 1, 0};
+  const double ell[] = {0, 0, 2, 0, 2, 1, 1, 1, 1, 2, 0, 2};
+  CHECK(fault_of(4, square, &a, &b) == POLYGON_SIMPLE, "square");
+  CHECK(fault_of(4, clockwise, &a, &b) == POLYGON_SIMPLE, "clockwise square");
+  CHECK(fault_of(6, ell, &a, &b) == POLYGON_SIMPLE, "L shape");
+  const double bowtie[] = {0, 0, 1, 1, 1, 0, 0, 1};
+  CHECK(fault_of(4, bowtie, &a, &b) == POLYGON_EDGES_MEET && a == 0 && b == 2, "bow tie: edges %d %d", a, b);
+  const double touch[] = {0, 0, 2, 0, 2, 2, 1, 0, 0, 2};   /* vertex 3 lies on edge 0 */
+  CHECK(fault_of(5, touch, &a, &b) == POLYGON_EDGES_MEET && a == 0 && b == 2, "vertex on an edge: %d %d", a, b);
+  const double spike[] = {0, 0, 2, 0, 1, 0, 1, 1};   /* edge 1 folds back onto edge 0 */
+  CHECK(fault_of(4, spike, &a, &b) == POLYGON_EDGES_MEET && a == 0 && b == 1, "fold: edges %d %d", a, b);
+  const double flat[] = {0, 0, 1, 0, 2, 0};
+  CHECK(fault_of(3, flat, &a, &b) == POLYGON_EDGES_MEET && a == 0 && b == 2, "collinear: edges %d %d", a, b);
+  const double repeated[] = {0, 0, 1, 0, 1, 0, 0, 1};
+  CHECK(fault_of(4, repeated, &a, &b) == POLYGON_REPEATED_VERTEX && a == 1 && b == 2, "repeated: %d %d", a, b);
+  const double closed[] = {0, 0, 1, 0, 1, 1, 0, 0};   /* first vertex repeated at the end */
+  CHECK(fault_of(4, closed, &a, &b) == POLYGON_REPEATED_VERTEX && a == 0 && b == 3, "closed ring: %d %d", a, b);
+}
+
 int main(void) {
+  check_polygon_faults();
   check_box_and_polygon();
   check_circle();
   check_concave_polygon();
