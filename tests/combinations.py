@@ -1,22 +1,23 @@
 #!/usr/bin/python3
-"""The combination design of tests/combinations.sh: a pairwise (all-pairs) covering design over
-the solver's options, one combination a line.
+"""The combination design of tests/combinations.sh: pairwise (all-pairs) covers of the solver's
+options, one combination a line.
 
 Factors: scheme, dimension, kernel, h/dx, walls (none, fixed, moving, obstacle), free-surface
 detection, surface tension, shifting, the interface options (interface_pressure,
 interface_viscosity, interface_mode, interface_sharpness), the scheme-specific model switches
 (spc_model, dissipation_form), the number of ranks and re-partitioning every step. Every run
-also evaluates every kind of probe and writes stats and probes rows at every step. The word levels are read from the loader's
-tables in src/case_load.c, so a new scheme, kernel or option word enters the design by itself.
+also evaluates every kind of probe and writes stats and probes rows at every step. The word
+levels are read from the loader's tables in src/case_load.c, so a new scheme, kernel or option
+word enters the design by itself.
 
-Every pair of levels that some accepted combination holds is covered by an accepted combination
-(the loader's cross-key refusals, doc/user-guide.md section 7, are the constraints) in each of
-COVERS independent greedy covers (AETG-style, seeds seed, seed + 1, ...), so at least COVERS times
-in different company; REFUSED adds a few combinations the loader must refuse with status 1.
+Every pair of levels that some accepted combination holds is held by an accepted combination
+(the cross-key refusals of doc/user-guide.md section 7 are the constraints) in each of COVERS
+independent greedy covers (AETG-style, seeds seed, seed + 1, ...), so at least COVERS times in
+different company; REFUSED adds a few combinations that must be refused with status 1.
 
 Output: one line per combination, tab-separated: label, ranks, case file, expected outcome
 ("run" or "refused"), then the --set overrides.
-Usage: combinations.py [--seed N] [--count]   (--seed: another design of the same strength)
+Usage: combinations.py [--seed N]   (another design of the same strength)
 """
 import itertools
 import os
@@ -91,7 +92,7 @@ SCHEME_LIMITS = {
 # The model switches belong to one scheme each.
 MODEL_SCHEME = {"spc_model": "same-phase-continuity", "dissipation_form": "generalized-dissipation"}
 
-# Combinations the loader must refuse (status 1): each breaks one of the limits above.
+# Combinations that must be refused (status 1): each sets a level its scheme refuses.
 REFUSED = [
     {"scheme": "riemann", "walls": "moving"},
     {"scheme": "riemann", "interface_viscosity": "none"},
@@ -148,6 +149,11 @@ def required_pairs(levels, names):
     return need
 
 
+def ordered_pair(names, p, q):
+    """The pair of levels p, q ((factor, level) each) in the order of pairs_of."""
+    return (p, q) if names.index(p[0]) < names.index(q[0]) else (q, p)
+
+
 def candidate(levels, names, uncovered, rng):
     """One accepted combination started from an uncovered pair and filled greedily."""
     (f, v), (g, w) = rng.choice(sorted(uncovered))
@@ -160,9 +166,8 @@ def candidate(levels, names, uncovered, rng):
             a[n] = x
             if not accepted(a) or complete(a, levels, names) is None:
                 continue
-            gain = sum(1 for m in a if m != n and
-                       tuple(sorted([(n, x), (m, a[m])], key=lambda p: names.index(p[0])))
-                       in uncovered)
+            gain = sum(1 for m in a
+                       if m != n and ordered_pair(names, (n, x), (m, a[m])) in uncovered)
             if gain > best_gain:
                 best, best_gain = x, gain
         a[n] = best
@@ -260,18 +265,13 @@ def overrides(a):
 
 def main():
     args = sys.argv[1:]
-    seed = SEED
-    if args[:1] == ["--seed"]:
-        seed, args = int(args[1]), args[2:]
+    seed = int(args[1]) if args[:1] == ["--seed"] else SEED
+    names = [n for n, _ in factors()]
     rows = design(seed)
-    n_refused = len(REFUSED)
-    if args == ["--count"]:
-        print("%d accepted, %d refused" % (len(rows) - n_refused, n_refused))
-        return
     for k, a in enumerate(rows):
         case, sets = overrides(a)
-        label = " ".join("%s=%s" % (n, a[n]) for n, _ in factors())
-        expect = "refused" if k >= len(rows) - n_refused else "run"
+        label = " ".join("%s=%s" % (n, a[n]) for n in names)
+        expect = "refused" if k >= len(rows) - len(REFUSED) else "run"
         print("\t".join([label, a["ranks"], case, expect] + sets))
 
 

@@ -47,7 +47,8 @@ report() {
   shift 2
   echo "    $label"
   echo "    command: $(shell_words "$@")"
-  grep -E 'mpsph:|ERROR: |runtime error|signal|SUMMARY|^    #[0-9]' "$log" | head -n 20 | sed 's/^/    | /'
+  grep -E 'mpsph:|ERROR: |runtime error|signal|SUMMARY|^    #[0-9]' "$log" | head -n 20 |
+    sed 's/^/    | /'
 }
 
 # verdict STATUS LOG EXPECT: empty when the run ended cleanly, else what went wrong.
@@ -55,7 +56,8 @@ verdict() {
   local status=$1 log=$2 expect=$3
   if grep -qE 'ERROR: (Address|Leak|UndefinedBehavior)Sanitizer|runtime error:' "$log"; then
     echo "sanitizer report (status $status)"
-  elif grep -qE 'exited on signal|Segmentation fault|Aborted|core dumped' "$log" || [ "$status" -gt 2 ]; then
+  elif [ "$status" -gt 2 ] || grep -qE 'exited on signal|Segmentation fault|Aborted|core dumped' "$log"
+  then
     echo "signal, time-out or unexpected status $status"
   elif [ "$status" -ne 0 ] && ! grep -q '^mpsph: ' "$log"; then
     echo "status $status without an mpsph: message"
@@ -92,7 +94,8 @@ while IFS=$'\t' read -r -a row; do
   [ "$status" -ne 0 ] && echo "    $label"$'\n'"    $(grep -m1 '^mpsph: ' "$log")"
 done < "$tmp/design.tsv"
 
-echo "$n combinations run (design: $("$PYTHON" "${design[@]}" --count)):" \
+echo "$n combinations run (design: $(grep -c $'\trun\t' "$tmp/design.tsv") to run," \
+     "$(grep -c $'\trefused\t' "$tmp/design.tsv") to be refused):" \
      "${outcome[0]} exit 0, ${outcome[1]} exit 1 ($unexpected_refusals of them outside the" \
      "design's refused ones), ${outcome[2]} exit 2, ${outcome[failed]} failed;" \
      "$((SECONDS - start)) s"
