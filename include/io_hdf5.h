@@ -58,6 +58,10 @@ int hdf5_read_header(const char *path, struct snapshot_info *info, MPI_Comm comm
 /** Free the strings of an info filled by hdf5_read_header. */
 void hdf5_info_free(struct snapshot_info *info);
 
+/** Collective: 0 when `failed` is 0 on every rank; otherwise 1 on every rank, with msg replaced
+ *  by the message (at most 767 characters) of the lowest rank where `failed` is not 0. */
+int io_agree(int failed, MPI_Comm comm, char *msg, size_t len);
+
 /** Collective: read a checkpoint written by hdf5_write_checkpoint. Each rank receives a
  *  contiguous block of about n_particles / ranks rows into p (initialised by the caller with
  *  the dimension and walls the case implies; n_owned set, cells not assigned), and every rank
