@@ -214,7 +214,8 @@ static int particle_rules(const struct parts *p, long i, const struct case_def *
   for (int d = 0; d < p->dim; d++)
     r[n++] = in_column(real_rule("/particles/position", p->x[d][i], c->domain_min[d],
                                  c->domain_max[d], 0, "inside the domain"), d);
-  for (int d = 0; d < p->dim; d++) r[n++] = in_column(finite_rule("/particles/velocity", p->v[d][i]), d);
+  for (int d = 0; d < p->dim; d++)
+    r[n++] = in_column(finite_rule("/particles/velocity", p->v[d][i]), d);
   for (int d = 0; walls && d < p->dim; d++)
     r[n++] = in_column(finite_rule("/particles/mirror", p->mirror[d][i]), d);
   r[n++] = real_rule("/particles/density", p->rho[i], 0, INFINITY, OPEN_MIN | OPEN_MAX, NULL);
@@ -330,8 +331,8 @@ static int find_repeat(const int64_t *pairs, long n, long lo, long block, char *
     repeat = *seen >= 0;
     if (repeat)
       snprintf(why, len, "/particles/id: rows %lld and %lld: got %lld in both, expected each id "
-               "once", (long long)(*seen < row ? *seen : row), (long long)(*seen < row ? row : *seen),
-               (long long)id);
+               "once", (long long)(*seen < row ? *seen : row),
+               (long long)(*seen < row ? row : *seen), (long long)id);
     *seen = row;
   }
   free(row_of);

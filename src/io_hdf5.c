@@ -616,8 +616,8 @@ static int read_run(hid_t file, struct checkpoint_extra *x, hid_t dxpl, MPI_Comm
   if (g >= 0) H5Gclose(g);
   if (agree(st, comm, err, len)) return 3;
   x->n_snapshots = (int)n;
-  x->snapshot_times = mem_alloc(mem_bytes((size_t)n, sizeof(double), "snapshot series"), "snapshot series");
-  x->snapshot_counts = mem_alloc(mem_bytes((size_t)n, sizeof(long), "snapshot series"), "snapshot series");
+  x->snapshot_times = mem_calloc((size_t)n, sizeof(double), "snapshot series");
+  x->snapshot_counts = mem_calloc((size_t)n, sizeof(long), "snapshot series");
   struct field f[2];
   series_fields(x, f);
   st = read_field(file, &f[0], n, 1, dxpl, NULL, comm, err, len);
