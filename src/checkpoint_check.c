@@ -9,6 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
+#include "init.h"
 #include "mem.h"
 
 #define OPEN_MIN 1u      /* the value must lie above min, not at it */
@@ -196,28 +197,40 @@ static int series_rules(const struct engine *e, long n_particles, int k, struct 
   return n;
 }
 
-/* The rules of particle i of p, of a checkpoint of n_particles particles of case c. */
-static int particle_rules(const struct parts *p, long i, const struct case_def *c,
-                          long n_particles, struct rule *r) {
-  int n = 0, walls = p->wall != NULL;
-  r[n++] = integer_rule("/particles/id", (double)p->id[i], 0, (double)(n_particles - 1),
+/* What the particle rows of a checkpoint are checked against. */
+struct particle_bounds {
+  const struct case_def *c;   /* the checkpoint's case */
+  long n_particles;
+  double mirror_reach;        /* a ghost lies within the wall thickness of its wall, so its
+                                 mirror offset within twice that [m] */
+};
+
+/* The rules of particle i of p. */
+static int particle_rules(const struct parts *p, long i, const struct particle_bounds *b,
+                          struct rule *r) {
+  const struct case_def *c = b->c;
+  int n = 0, walls = p->wall != NULL, ghost = p->phase[i] == PHASE_WALL;
+  r[n++] = integer_rule("/particles/id", (double)p->id[i], 0, (double)(b->n_particles - 1),
                         "the ids are 0 to n_particles - 1, each once");
   r[n++] = integer_rule("/particles/phase", p->phase[i], walls ? PHASE_WALL : 0,
                         c->n_phases - 1,
                         walls ? "an index into phases, or -1 for a wall ghost"
                               : "an index into phases: the case has no walls");
   if (walls)
-    r[n++] = p->phase[i] == PHASE_WALL
-                 ? integer_rule("/particles/wall", p->wall[i], 0, c->n_walls - 1,
-                                "a wall ghost's index into walls")
-                 : integer_rule("/particles/wall", p->wall[i], -1, -1, "-1 for a fluid particle");
+    r[n++] = ghost ? integer_rule("/particles/wall", p->wall[i], 0, c->n_walls - 1,
+                                  "a wall ghost's index into walls")
+                   : integer_rule("/particles/wall", p->wall[i], -1, -1, "-1 for a fluid particle");
   for (int d = 0; d < p->dim; d++)
     r[n++] = in_column(real_rule("/particles/position", p->x[d][i], c->domain_min[d],
                                  c->domain_max[d], 0, "inside the domain"), d);
   for (int d = 0; d < p->dim; d++)
     r[n++] = in_column(finite_rule("/particles/velocity", p->v[d][i]), d);
   for (int d = 0; walls && d < p->dim; d++)
-    r[n++] = in_column(finite_rule("/particles/mirror", p->mirror[d][i]), d);
+    r[n++] = in_column(ghost ? real_rule("/particles/mirror", p->mirror[d][i], -b->mirror_reach,
+                                         b->mirror_reach, ROUNDED,
+                                         "a ghost's mirror point is within twice the wall "
+                                         "thickness")
+                             : finite_rule("/particles/mirror", p->mirror[d][i]), d);
   r[n++] = real_rule("/particles/density", p->rho[i], 0, INFINITY, OPEN_MIN | OPEN_MAX, NULL);
   r[n++] = finite_rule("/particles/pressure", p->p[i]);
   r[n++] = real_rule("/particles/mass", p->m[i], 0, INFINITY, OPEN_MIN | OPEN_MAX, NULL);
@@ -260,15 +273,13 @@ static int overwrites_snapshot(const struct engine *e, char *why, size_t len) {
   return 1;
 }
 
-/* This rank's particles (global rows from first_row) of a checkpoint of n_particles rows of
- * case c: 0, or 1 with the first rule a row breaks. */
-static int check_particles(const struct parts *p, const struct case_def *c, long n_particles,
+/* This rank's particles (global rows from first_row): 0, or 1 with the first rule a row
+ * breaks. */
+static int check_particles(const struct parts *p, const struct particle_bounds *b,
                            long first_row, char *why, size_t len) {
   struct rule r[MAX_RULES];
   for (long i = 0; i < p->n_owned; i++)
-    if (check_rules(r, particle_rules(p, i, c, n_particles, r), first_row + i, &p->id[i], why,
-                    len))
-      return 1;
+    if (check_rules(r, particle_rules(p, i, b, r), first_row + i, &p->id[i], why, len)) return 1;
   return 0;
 }
 
@@ -364,13 +375,15 @@ int checkpoint_check(const struct engine *e, const struct case_def *c,
                      size_t len) {
   struct rule r[MAX_RULES];
   long mine = e->p.n_owned, first_row = 0, n_particles = info->n_particles;
+  struct particle_bounds bounds = {c, n_particles,
+                                   2 * init_wall_layers(c, e->kern.support) * c->dx};
   MPI_Exscan(&mine, &first_row, 1, MPI_LONG, MPI_SUM, e->comm);
   if (e->rank == 0) first_row = 0;   /* MPI_Exscan leaves rank 0's result undefined */
   int bad = check_rules(r, header_rules(info, c, r), -1, NULL, why, len) ||
             check_rules(r, run_rules(e, c, x, r), -1, NULL, why, len) ||
             check_series(e, n_particles, why, len) ||
             (e->rank == 0 && overwrites_snapshot(e, why, len)) ||
-            check_particles(&e->p, c, n_particles, first_row, why, len);
+            check_particles(&e->p, &bounds, first_row, why, len);
   if (io_agree(bad, e->comm, why, len)) return 1;
   return io_agree(ids_repeat(&e->p, n_particles, first_row, e->comm, why, len), e->comm, why, len);
 }

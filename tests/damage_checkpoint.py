@@ -70,7 +70,8 @@ DAMAGES = {
     "pressure_inf": lambda f: set_row(f, "particles/pressure", 0, np.inf),
     "velocity_nan": lambda f: set_row(f, "particles/velocity", -1, [0.0, np.nan]),
     "position_outside": lambda f: set_row(f, "particles/position", -1, [100.0, 0.5]),
-    "mirror_nan": lambda f: set_row(f, "particles/mirror", first(f, True), [np.nan, 0.0]),
+    "mirror_nan": lambda f: set_row(f, "particles/mirror", first(f, False), [np.nan, 0.0]),
+    "mirror_far": lambda f: set_row(f, "particles/mirror", first(f, True), [0.0, 5.0]),
 }
 
 

@@ -44,6 +44,7 @@ declare -A expect=(
   [velocity_nan]='/particles/velocity: row [0-9]+ \(id [0-9]+\), column 1: got nan, expected a finite number'
   [position_outside]='/particles/position: row [0-9]+ \(id [0-9]+\), column 0: got 100, expected a number in \[-0.3, 3.516\]'
   [mirror_nan]='/particles/mirror: row [0-9]+ \(id [0-9]+\), column 0: got nan, expected a finite number'
+  [mirror_far]='/particles/mirror: row [0-9]+ \(id [0-9]+\), column 1: got 5, expected a number in \[-[0-9.]+, [0-9.]+\] \(a ghost'"'"'s mirror point'
   [truncated]='cannot open .*/truncated.h5'
 )
 
