@@ -116,16 +116,18 @@ static int check_rules(const struct rule *r, int n, long row, const int64_t *id,
 
 /* ---- the tables ---- */
 
-/* The /header rules, against the checkpoint's case c. */
-static int header_rules(const struct snapshot_info *info, const struct case_def *c,
-                        struct rule *r) {
+/* The /header rules, against the checkpoint's case c (with the kernel of e). */
+static int header_rules(const struct engine *e, const struct case_def *c,
+                        const struct snapshot_info *info, struct rule *r) {
   int n = 0;
   r[n++] = real_rule("/header/time", info->time, 0, INFINITY, OPEN_MIN | OPEN_MAX, NULL);
   r[n++] = integer_rule("/header/step", (double)info->step, 1, INFINITY,
                         "a checkpoint is written after a step");
   r[n++] = integer_rule("/header/dimension", info->dimension, c->dimension, c->dimension,
                         "the dimension of its case");
-  r[n++] = integer_rule("/header/n_particles", (double)info->n_particles, 1, INFINITY, NULL);
+  r[n++] = integer_rule("/header/n_particles", (double)info->n_particles, 1,
+                        floor(init_visit_count(c, e->kern.support)),
+                        "at most the lattice nodes its case fills with fluid and ghosts");
   return n;
 }
 
@@ -238,6 +240,12 @@ static int particle_rules(const struct parts *p, long i, const struct particle_b
 }
 
 /* ---- the checks ---- */
+
+int checkpoint_check_header(const struct engine *e, const struct case_def *c,
+                            const struct snapshot_info *info, char *why, size_t len) {
+  struct rule r[MAX_RULES];
+  return check_rules(r, header_rules(e, c, info, r), -1, NULL, why, len);
+}
 
 /* The snapshot series in e: at least snapshot 0, and each row by series_rules; 0 or 1. */
 static int check_series(const struct engine *e, long n_particles, char *why, size_t len) {
@@ -379,8 +387,7 @@ int checkpoint_check(const struct engine *e, const struct case_def *c,
                                    2 * init_wall_layers(c, e->kern.support) * c->dx};
   MPI_Exscan(&mine, &first_row, 1, MPI_LONG, MPI_SUM, e->comm);
   if (e->rank == 0) first_row = 0;   /* MPI_Exscan leaves rank 0's result undefined */
-  int bad = check_rules(r, header_rules(info, c, r), -1, NULL, why, len) ||
-            check_rules(r, run_rules(e, c, x, r), -1, NULL, why, len) ||
+  int bad = check_rules(r, run_rules(e, c, x, r), -1, NULL, why, len) ||
             check_series(e, n_particles, why, len) ||
             (e->rank == 0 && overwrites_snapshot(e, why, len)) ||
             check_particles(&e->p, &bounds, first_row, why, len);

@@ -126,23 +126,32 @@ static void reschedule(struct engine *e, const struct case_def *old) {
                                    c->checkpoint_interval, e->time);
 }
 
-/* Read particles and run state of the checkpoint into e, and check them against the rules of
- * checkpoint_check.c before anything uses them. Returns 0 or 1. */
+/* Read the checkpoint into e and x, each part checked (checkpoint_check.h) before anything
+ * is read by it: the /run group, then the header (the particle count), then the particles and
+ * everything together. Returns 0, or 1 with the reason in err. */
+static int read_checked(struct engine *e, const char *path, const struct snapshot_info *info,
+                        const struct case_def *old, struct run_extras *x, char *err, size_t len) {
+  struct hdf5_number v[MAX_NUMBERS];
+  struct checkpoint_extra extra = {run_numbers(e, x, v), v, 0, NULL, NULL};
+  parts_init(&e->p, e->c->dimension, 1, e->c->n_walls > 0);
+  int status = hdf5_read_run(path, &extra, e->comm, err, len);
+  e->snap_times = extra.snapshot_times;     /* owned by e from here, read or not */
+  e->snap_counts = extra.snapshot_counts;
+  e->n_snapshots = extra.n_snapshots;
+  e->time = info->time;
+  e->step = info->step;
+  return status || checkpoint_check_header(e, old, info, err, len) ||
+         hdf5_read_particles(path, &e->p, e->comm, err, len) ||
+         checkpoint_check(e, old, info, x, err, len);
+}
+
+/* Read the checkpoint into e (refused unless every field passes its check) and restore the
+ * run state. Returns 0 or 1. */
 static int restore(struct engine *e, const char *path, const struct snapshot_info *info,
                    const struct case_def *old) {
   char err[1024];
   struct run_extras x;
-  struct hdf5_number v[MAX_NUMBERS];
-  struct checkpoint_extra extra = {run_numbers(e, &x, v), v, 0, NULL, NULL};
-  parts_init(&e->p, e->c->dimension, 1, e->c->n_walls > 0);
-  int status = hdf5_read_checkpoint(path, &e->p, &extra, e->comm, err, sizeof err);
-  e->snap_times = extra.snapshot_times;     /* owned by e from here, read or not */
-  e->snap_counts = extra.snapshot_counts;
-  if (status) return refuse(e, path, err);
-  e->time = info->time;
-  e->step = info->step;
-  e->n_snapshots = extra.n_snapshots;
-  if (checkpoint_check(e, old, info, &x, err, sizeof err)) return refuse(e, path, err);
+  if (read_checked(e, path, info, old, &x, err, sizeof err)) return refuse(e, path, err);
   e->no_free_surface = (int)x.no_free_surface;
   e->wall_start = MPI_Wtime() - x.wall_seconds;
   e->wall_guard_hits = e->rank ? 0 : x.wall_guard_hits;   /* summed over the ranks in stats.csv */

@@ -624,7 +624,8 @@ static int read_run(hid_t file, struct checkpoint_extra *x, hid_t dxpl, MPI_Comm
   return st ? st : read_field(file, &f[1], n, 1, dxpl, NULL, comm, err, len);
 }
 
-/* Open path and read particles and run state; 0 or 3 (same on every rank). */
+/* Open path and read its run state (x not NULL: the /run group) or particles (p not NULL);
+ * 0 or 3 (same on every rank). */
 static int read_checkpoint_file(const char *path, struct parts *p, struct checkpoint_extra *x,
                                 MPI_Comm comm, char *err, size_t len) {
   hid_t file, dxpl = H5I_INVALID_HID;
@@ -632,16 +633,23 @@ static int read_checkpoint_file(const char *path, struct parts *p, struct checkp
   int st = agree(open_file(path, 0, comm, &file, err, len), comm, err, len);
   if (st) return st;
   st = agree(collective_dxpl(&dxpl, err, len), comm, err, len);
-  if (!st) st = read_run(file, x, dxpl, comm, err, len);   /* first: is it a checkpoint? */
-  if (!st) st = read_particles(file, p, dxpl, comm, err, len);
+  if (!st && x) st = read_run(file, x, dxpl, comm, err, len);
+  if (!st && p) st = read_particles(file, p, dxpl, comm, err, len);
   if (dxpl >= 0) H5Pclose(dxpl);
   H5Fclose(file);
   return agree(st, comm, err, len);
 }
 
-int hdf5_read_checkpoint(const char *path, struct parts *p, struct checkpoint_extra *extra,
-                         MPI_Comm comm, char *err, size_t err_len) {
+int hdf5_read_run(const char *path, struct checkpoint_extra *extra, MPI_Comm comm, char *err,
+                  size_t err_len) {
   int st;
-  QUIET_HDF5(st, read_checkpoint_file(path, p, extra, comm, err, err_len));
+  QUIET_HDF5(st, read_checkpoint_file(path, NULL, extra, comm, err, err_len));
+  return st;
+}
+
+int hdf5_read_particles(const char *path, struct parts *p, MPI_Comm comm, char *err,
+                        size_t err_len) {
+  int st;
+  QUIET_HDF5(st, read_checkpoint_file(path, p, NULL, comm, err, err_len));
   return st;
 }

@@ -41,6 +41,7 @@ def first(f, want_ghost):
 
 DAMAGES = {
     "n_particles_negative": lambda f: set_attr(f["header"], "n_particles", -1),
+    "n_particles_huge": lambda f: set_attr(f["header"], "n_particles", 10**12),
     "n_particles_more": lambda f: set_attr(f["header"], "n_particles",
                                            f["header"].attrs["n_particles"] + 1),
     "density_rows_short": lambda f: replace(f, "particles/density", f["particles/density"][:-1]),

@@ -18,7 +18,8 @@ fail=0
 
 # The damages and the message each must give after "cannot restart from FILE: ".
 declare -A expect=(
-  [n_particles_negative]='/header/n_particles: got -1, expected a row count >= 0'
+  [n_particles_negative]='/header/n_particles: got -1, expected an integer from 1 to [0-9]+'
+  [n_particles_huge]='/header/n_particles: got 1000000000000, expected an integer from 1 to [0-9]+ \(at most the lattice nodes'
   [n_particles_more]='/particles/position has [0-9]+ rows, expected [0-9]+'
   [density_rows_short]='/particles/density has [0-9]+ rows, expected [0-9]+'
   [time_nan]='/header/time: got nan, expected a finite number > 0'
