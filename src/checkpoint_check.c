@@ -250,8 +250,8 @@ int checkpoint_check_header(const struct engine *e, const struct case_def *c,
 /* The snapshot series in e: at least snapshot 0, and each row by series_rules; 0 or 1. */
 static int check_series(const struct engine *e, long n_particles, char *why, size_t len) {
   struct rule r[MAX_RULES];
-  r[0] = integer_rule("/run/snapshot_times: number of rows", e->n_snapshots, 1, INFINITY,
-                      "a run writes snapshot 0 at t = 0");
+  r[0] = integer_rule("/run/snapshot_times: number of rows", e->n_snapshots, 1,
+                      (double)e->step + 1, "snapshot 0 at t = 0, then at most one a step");
   if (check_rules(r, 1, -1, NULL, why, len)) return 1;
   for (int k = 0; k < e->n_snapshots; k++)
     if (check_rules(r, series_rules(e, n_particles, k, r), k, NULL, why, len)) return 1;

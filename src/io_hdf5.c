@@ -612,6 +612,8 @@ static int read_run(hid_t file, struct checkpoint_extra *x, hid_t dxpl, MPI_Comm
   hid_t d = st ? H5I_INVALID_HID : H5Dopen2(g, "snapshot_times", H5P_DEFAULT);
   long n = d < 0 ? -1 : dataset_rows(d, "/run/snapshot_times", 1, err, len);
   if (!st && n < 0) st = fail(err, len, "no dataset /run/snapshot_times");
+  if (!st && n > INT_MAX) st = fail(err, len, "/run/snapshot_times has %ld rows, more than %d", n,
+                                    INT_MAX);
   if (d >= 0) H5Dclose(d);
   if (g >= 0) H5Gclose(g);
   if (agree(st, comm, err, len)) return 3;
