@@ -12,9 +12,10 @@
 int engine_checkpoint_write(struct engine *e);
 
 /** Restart from the checkpoint at `path`: refuse (status 1, message on rank 0) when it is
- *  missing or unreadable or its case differs from e->c in anything but time.end,
- *  time.max_steps, output.* and parallel.*; otherwise give each rank a block of its particles
- *  (cells not yet assigned) and restore the run state. Collective. Returns 0 or 1. */
+ *  missing or unreadable, its case differs from e->c in anything but time.end,
+ *  time.max_steps, output.* and parallel.*, or a field breaks a rule of checkpoint_check.h;
+ *  otherwise give each rank a block of its particles (cells not yet assigned) and restore the
+ *  run state. Collective. Returns 0 or 1 (the same on every rank). */
 int engine_checkpoint_read(struct engine *e, const char *path);
 
 #endif

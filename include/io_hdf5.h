@@ -31,7 +31,7 @@ struct checkpoint_extra {
   int n_numbers;
   const struct hdf5_number *numbers;
   int n_snapshots;
-  double *snapshot_times;    /* allocated by hdf5_read_checkpoint (caller frees) */
+  double *snapshot_times;    /* allocated by hdf5_read_run (caller frees) */
   long *snapshot_counts;     /* likewise */
 };
 
@@ -58,13 +58,23 @@ int hdf5_read_header(const char *path, struct snapshot_info *info, MPI_Comm comm
 /** Free the strings of an info filled by hdf5_read_header. */
 void hdf5_info_free(struct snapshot_info *info);
 
-/** Collective: read a checkpoint written by hdf5_write_checkpoint. Each rank receives a
- *  contiguous block of about n_particles / ranks rows into p (initialised by the caller with
- *  the dimension and walls the case implies; n_owned set, cells not assigned), and every rank
- *  the numbers and the snapshot series of extra. Returns 0, or 3 with a message in err when the
- *  file does not hold what p and extra ask for. */
-int hdf5_read_checkpoint(const char *path, struct parts *p, struct checkpoint_extra *extra,
-                         MPI_Comm comm, char *err, size_t err_len);
+/** Collective: 0 when `failed` is 0 on every rank; otherwise 1 on every rank, with msg replaced
+ *  by the message (at most 767 characters) of the lowest rank where `failed` is not 0. */
+int io_agree(int failed, MPI_Comm comm, char *msg, size_t len);
+
+/** Collective: read the /run group of a checkpoint written by hdf5_write_checkpoint: every
+ *  rank the numbers and the snapshot series of extra. Returns 0, or 3 with a message in err
+ *  when the file does not hold them ("no group /run: not a checkpoint" for a snapshot). */
+int hdf5_read_run(const char *path, struct checkpoint_extra *extra, MPI_Comm comm, char *err,
+                  size_t err_len);
+
+/** Collective: read the /particles of a checkpoint written by hdf5_write_checkpoint. Each rank
+ *  receives a contiguous block of about n_particles / ranks rows into p (initialised by the
+ *  caller with the dimension and walls the case implies; n_owned set, cells not assigned).
+ *  Every dataset's row count is checked against /header/n_particles before p grows. Returns
+ *  0, or 3 with a message in err when the file does not hold what p asks for. */
+int hdf5_read_particles(const char *path, struct parts *p, MPI_Comm comm, char *err,
+                        size_t err_len);
 
 /** Rank-0 only: (re)write `dir`/snapshots.xdmf listing snapshots 0..n-1 (file names
  *  snap_NNNNN.h5, times, particle counts) as an XDMF temporal collection of Polyvertex grids

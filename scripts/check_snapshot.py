@@ -30,7 +30,7 @@ PARTICLES = {
 }
 RUN_NUMBERS = ("dt", "next_output", "next_stats", "next_probes", "next_checkpoint",
                "last_snapshot_step", "last_stats_step", "last_probes_step", "wall_seconds",
-               "no_free_surface", "finished")
+               "no_free_surface", "finished", "wall_guard_hits")
 XDMF_TYPES = {np.dtype(np.float64): ("Float", "8"), np.dtype(np.int32): ("Int", "4"),
               np.dtype(np.int64): ("Int", "8")}
 

@@ -5,18 +5,12 @@
 #include <stdlib.h>
 #include <string.h>
 #include "case_load.h"
+#include "checkpoint_check.h"
 #include "engine_checkpoint.h"
 #include "io_hdf5.h"
+#include "mem.h"
 
 #define MAX_NUMBERS 12
-
-/* The stored run values that are not engine fields of the stored type. */
-struct run_extras {
-  double wall_seconds;        /* wall-clock time of the run so far [s] */
-  long no_free_surface;       /* free_surface auto switched detection off */
-  long finished;              /* the run reached time.end or time.max_steps */
-  long wall_guard_hits;       /* the wall guard's corrections on all ranks so far */
-};
 
 /* The /run numbers: engine fields and the extras, as named pointers (for writing and reading). */
 static int run_numbers(struct engine *e, struct run_extras *x, struct hdf5_number *v) {
@@ -98,7 +92,7 @@ static int case_differs(const struct engine *e, const char *path, const char *ya
     snprintf(why, len, "its case does not load with this version: %s", err);
     return 1;
   }
-  struct case_def *cmp = malloc(sizeof *cmp);
+  struct case_def *cmp = mem_alloc(sizeof *cmp, "case of the checkpoint");
   *cmp = *old;
   allow_restart_changes(cmp, e->c);
   char *was = case_to_yaml(cmp), *now = case_to_yaml(e->c);
@@ -132,21 +126,32 @@ static void reschedule(struct engine *e, const struct case_def *old) {
                                    c->checkpoint_interval, e->time);
 }
 
-/* Read particles and run state of the checkpoint into e. Returns 0 or 1. */
+/* Read the checkpoint into e and x, each part checked (checkpoint_check.h) before anything
+ * is read by it: the /run group, then the header (the particle count), then the particles and
+ * everything together. Returns 0, or 1 with the reason in err. */
+static int read_checked(struct engine *e, const char *path, const struct snapshot_info *info,
+                        const struct case_def *old, struct run_extras *x, char *err, size_t len) {
+  struct hdf5_number v[MAX_NUMBERS];
+  struct checkpoint_extra extra = {run_numbers(e, x, v), v, 0, NULL, NULL};
+  parts_init(&e->p, e->c->dimension, 1, e->c->n_walls > 0);
+  int status = hdf5_read_run(path, &extra, e->comm, err, len);
+  e->snap_times = extra.snapshot_times;     /* owned by e from here, read or not */
+  e->snap_counts = extra.snapshot_counts;
+  e->n_snapshots = extra.n_snapshots;
+  e->time = info->time;
+  e->step = info->step;
+  return status || checkpoint_check_header(e, old, info, err, len) ||
+         hdf5_read_particles(path, &e->p, e->comm, err, len) ||
+         checkpoint_check(e, old, info, x, err, len);
+}
+
+/* Read the checkpoint into e (refused unless every field passes its check) and restore the
+ * run state. Returns 0 or 1. */
 static int restore(struct engine *e, const char *path, const struct snapshot_info *info,
                    const struct case_def *old) {
   char err[1024];
   struct run_extras x;
-  struct hdf5_number v[MAX_NUMBERS];
-  struct checkpoint_extra extra = {run_numbers(e, &x, v), v, 0, NULL, NULL};
-  parts_init(&e->p, e->c->dimension, 1, e->c->n_walls > 0);
-  int status = hdf5_read_checkpoint(path, &e->p, &extra, e->comm, err, sizeof err);
-  e->snap_times = extra.snapshot_times;     /* owned by e from here, read or not */
-  e->snap_counts = extra.snapshot_counts;
-  if (status) return refuse(e, path, err);
-  e->time = info->time;
-  e->step = info->step;
-  e->n_snapshots = extra.n_snapshots;
+  if (read_checked(e, path, info, old, &x, err, sizeof err)) return refuse(e, path, err);
   e->no_free_surface = (int)x.no_free_surface;
   e->wall_start = MPI_Wtime() - x.wall_seconds;
   e->wall_guard_hits = e->rank ? 0 : x.wall_guard_hits;   /* summed over the ranks in stats.csv */
@@ -161,7 +166,7 @@ int engine_checkpoint_read(struct engine *e, const char *path) {
   char why[2048];
   struct snapshot_info info;
   if (hdf5_read_header(path, &info, e->comm, why, sizeof why)) return refuse(e, path, why);
-  struct case_def *old = malloc(sizeof *old);
+  struct case_def *old = mem_alloc(sizeof *old, "case of the checkpoint");
   int status = case_differs(e, path, info.case_yaml, old, why, sizeof why) ? refuse(e, path, why)
                                                                            : restore(e, path, &info, old);
   if (!status && e->rank == 0 && strcmp(info.code_version, MPSPH_VERSION))

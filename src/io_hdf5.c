@@ -13,6 +13,8 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "mem.h"
+
 /* Bytes one rank hands to one H5Dwrite: MPI-IO counts are int, so stay well below 2 GiB.
  * Can be lowered at compile time to exercise the multi-call path. */
 #ifndef MPSPH_IO_MAX_BYTES
@@ -227,17 +229,30 @@ static long dataset_rows(hid_t dset, const char *name, int ncomp, char *err, siz
   return -1;
 }
 
+/* Open dataset f and check its columns and that it has `total` rows (total < 0: any): the
+ * dataset, its rows in *rows; or H5I_INVALID_HID with a message in err. */
+static hid_t open_field(hid_t file, const struct field *f, long total, long *rows, char *err,
+                        size_t len) {
+  hid_t dset = H5Dopen2(file, f->name, H5P_DEFAULT);
+  *rows = dset < 0 ? (fail(err, len, "no dataset %s", f->name), -1)
+                   : dataset_rows(dset, f->name, f->ncomp, err, len);
+  if (*rows >= 0 && total >= 0 && *rows != total)
+    *rows = (fail(err, len, "%s has %ld rows, expected %ld", f->name, *rows, total), -1);
+  if (*rows < 0 && dset >= 0) {
+    H5Dclose(dset);
+    dset = H5I_INVALID_HID;
+  }
+  return dset;
+}
+
 /* Open dataset f, check it has `total` rows (total < 0: any; then *rows_out gets them) and
  * read this rank's rows of layout L (set up here from the row count: a block per rank, or
  * every row when whole) into f's arrays. Collective; 0 or 3. */
 static int read_field(hid_t file, const struct field *f, long total, int whole, hid_t dxpl,
                       long *rows_out, MPI_Comm comm, char *err, size_t len) {
-  hid_t dset = H5Dopen2(file, f->name, H5P_DEFAULT);
-  long rows = dset < 0 ? (fail(err, len, "no dataset %s", f->name), -1)
-                       : dataset_rows(dset, f->name, f->ncomp, err, len);
-  if (rows >= 0 && total >= 0 && rows != total)
-    rows = (fail(err, len, "%s has %ld rows, expected %ld", f->name, rows, total), -1);
-  if (agree(rows < 0, comm, err, len)) {
+  long rows;
+  hid_t dset = open_field(file, f, total, &rows, err, len);
+  if (agree(dset < 0, comm, err, len)) {
     if (dset >= 0) H5Dclose(dset);
     return 3;
   }
@@ -545,6 +560,24 @@ void hdf5_info_free(struct snapshot_info *info) {
   info->case_yaml = info->code_version = NULL;
 }
 
+int io_agree(int failed, MPI_Comm comm, char *msg, size_t len) {
+  return agree(failed, comm, msg, len) ? 1 : 0;
+}
+
+/* Collective: 0 if every dataset of fields[0..n) has `total` rows (and its columns), else 3 on
+ * every rank with the first mismatch in err; nothing is read. */
+static int check_rows(hid_t file, const struct field *fields, int n, long total, MPI_Comm comm,
+                      char *err, size_t len) {
+  int st = 0;
+  for (int k = 0; k < n && !st; k++) {
+    long rows;
+    hid_t dset = open_field(file, &fields[k], total, &rows, err, len);
+    st = dset < 0 ? 3 : 0;
+    if (dset >= 0) H5Dclose(dset);
+  }
+  return agree(st, comm, err, len);
+}
+
 /* This rank's block of every /particles dataset into p; 0 or 3. */
 static int read_particles(hid_t file, struct parts *p, hid_t dxpl, MPI_Comm comm, char *err,
                           size_t len) {
@@ -554,13 +587,18 @@ static int read_particles(hid_t file, struct parts *p, hid_t dxpl, MPI_Comm comm
   hid_t g = H5Gopen2(file, "header", H5P_DEFAULT);
   int st = g < 0 ? fail(err, len, "no group /header")
                  : get_attr(g, "n_particles", H5T_NATIVE_INT64, &total, err, len);
+  if (!st && total < 0)
+    st = fail(err, len, "/header/n_particles: got %lld, expected a row count >= 0",
+              (long long)total);
   if (g >= 0) H5Gclose(g);
   if (agree(st, comm, err, len)) return 3;
+  int n = particle_fields(p, p->wall != NULL, fields);
+  if (check_rows(file, fields, n, (long)total, comm, err, len)) return 3;  /* before reserving */
   read_layout((hsize_t)total, 0, sizeof(double), comm, &L);
   parts_reserve(p, (long)L.n);
   p->n_owned = (long)L.n;
   p->n_halo = 0;
-  int n = particle_fields(p, p->wall != NULL, fields);
+  particle_fields(p, p->wall != NULL, fields);   /* the arrays may have moved */
   for (int k = 0; k < n && !st; k++)
     st = read_field(file, &fields[k], (long)total, 0, dxpl, NULL, comm, err, len);
   return st;
@@ -574,19 +612,22 @@ static int read_run(hid_t file, struct checkpoint_extra *x, hid_t dxpl, MPI_Comm
   hid_t d = st ? H5I_INVALID_HID : H5Dopen2(g, "snapshot_times", H5P_DEFAULT);
   long n = d < 0 ? -1 : dataset_rows(d, "/run/snapshot_times", 1, err, len);
   if (!st && n < 0) st = fail(err, len, "no dataset /run/snapshot_times");
+  if (!st && n > INT_MAX) st = fail(err, len, "/run/snapshot_times has %ld rows, more than %d", n,
+                                    INT_MAX);
   if (d >= 0) H5Dclose(d);
   if (g >= 0) H5Gclose(g);
   if (agree(st, comm, err, len)) return 3;
   x->n_snapshots = (int)n;
-  x->snapshot_times = malloc((n ? n : 1) * sizeof(double));
-  x->snapshot_counts = malloc((n ? n : 1) * sizeof(long));
+  x->snapshot_times = mem_calloc((size_t)n, sizeof(double), "snapshot series");
+  x->snapshot_counts = mem_calloc((size_t)n, sizeof(long), "snapshot series");
   struct field f[2];
   series_fields(x, f);
   st = read_field(file, &f[0], n, 1, dxpl, NULL, comm, err, len);
   return st ? st : read_field(file, &f[1], n, 1, dxpl, NULL, comm, err, len);
 }
 
-/* Open path and read particles and run state; 0 or 3 (same on every rank). */
+/* Open path and read its run state (x not NULL: the /run group) or particles (p not NULL);
+ * 0 or 3 (same on every rank). */
 static int read_checkpoint_file(const char *path, struct parts *p, struct checkpoint_extra *x,
                                 MPI_Comm comm, char *err, size_t len) {
   hid_t file, dxpl = H5I_INVALID_HID;
@@ -594,16 +635,23 @@ static int read_checkpoint_file(const char *path, struct parts *p, struct checkp
   int st = agree(open_file(path, 0, comm, &file, err, len), comm, err, len);
   if (st) return st;
   st = agree(collective_dxpl(&dxpl, err, len), comm, err, len);
-  if (!st) st = read_run(file, x, dxpl, comm, err, len);   /* first: is it a checkpoint? */
-  if (!st) st = read_particles(file, p, dxpl, comm, err, len);
+  if (!st && x) st = read_run(file, x, dxpl, comm, err, len);
+  if (!st && p) st = read_particles(file, p, dxpl, comm, err, len);
   if (dxpl >= 0) H5Pclose(dxpl);
   H5Fclose(file);
   return agree(st, comm, err, len);
 }
 
-int hdf5_read_checkpoint(const char *path, struct parts *p, struct checkpoint_extra *extra,
-                         MPI_Comm comm, char *err, size_t err_len) {
+int hdf5_read_run(const char *path, struct checkpoint_extra *extra, MPI_Comm comm, char *err,
+                  size_t err_len) {
   int st;
-  QUIET_HDF5(st, read_checkpoint_file(path, p, extra, comm, err, err_len));
+  QUIET_HDF5(st, read_checkpoint_file(path, NULL, extra, comm, err, err_len));
+  return st;
+}
+
+int hdf5_read_particles(const char *path, struct parts *p, MPI_Comm comm, char *err,
+                        size_t err_len) {
+  int st;
+  QUIET_HDF5(st, read_checkpoint_file(path, p, NULL, comm, err, err_len));
   return st;
 }

@@ -6,12 +6,14 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 _Noreturn void mem_fail(size_t bytes, const char *what) {
   if (bytes) fprintf(stderr, "mpsph: out of memory: %s (%zu bytes)\n", what, bytes);
   else fprintf(stderr, "mpsph: out of memory: %s (allocated inside a library)\n", what);
-  fflush(stderr);
-  exit(3);
+  fflush(NULL);
+  _exit(3);   /* not exit(): HDF5's exit handler would close an open MPI-IO file collectively and
+                 wait for the other ranks for ever; mpirun ends the job on this non-zero status */
 }
 
 size_t mem_bytes(size_t n, size_t size, const char *what) {
