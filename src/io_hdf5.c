@@ -12,6 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
+#include "io_mpiio.h"
 
 /* Bytes one rank hands to one H5Dwrite: MPI-IO counts are int, so stay well below 2 GiB.
  * Can be lowered at compile time to exercise the multi-call path. */
@@ -59,11 +60,13 @@ static int fail(char *err, size_t len, const char *fmt, ...) {
 }
 
 /* Collective: 0 if every rank's status is 0, else 3 on every rank with the message of the
- * lowest failing rank copied into err. Also serves as a barrier. */
+ * lowest failing rank copied into err. While a file is written, a failed write of this rank
+ * (recorded by io_mpiio.c, hidden from HDF5) counts as a failure. Also serves as a barrier. */
 static int agree(int status, MPI_Comm comm, char *err, size_t len) {
   int rank, who, first;
   char msg[768] = "";
   MPI_Comm_rank(comm, &rank);
+  if (!status) status = mpiio_watch_failed(err, len);
   who = status ? rank : INT_MAX;
   MPI_Allreduce(&who, &first, 1, MPI_INT, MPI_MIN, comm);
   if (first == INT_MAX) return 0;
@@ -450,6 +453,9 @@ static int write_file(const char *tmp, const struct snapshot_info *info, const s
   if (g >= 0) H5Gclose(g);
   if (!st) st = write_fields(file, fields, n, &L, comm, err, len);
   if (!st && extra) st = write_run(file, extra, comm, err, len);
+  /* collective: the metadata out, then MPI_File_sync, so that a write the system reports late
+   * (NFS, quotas) fails here, before the rename */
+  if (!st && H5Fflush(file, H5F_SCOPE_GLOBAL) < 0) st = fail(err, len, "cannot flush %s", tmp);
   test_abort_hook(tmp);
   if (H5Fclose(file) < 0 && !st) st = fail(err, len, "cannot close %s", tmp);
   return agree(st, comm, err, len);
@@ -495,7 +501,10 @@ static int write_via_tmp(const char *path, const struct snapshot_info *info,
   st = agree(st, comm, err, len);
   if (!st) {
     snprintf(tmp, n, "%s.tmp", path);
-    st = publish(tmp, path, write_file(tmp, info, p, extra, comm, err, len), comm, err, len);
+    mpiio_watch_begin(path);
+    st = write_file(tmp, info, p, extra, comm, err, len);
+    mpiio_watch_end();
+    st = publish(tmp, path, st, comm, err, len);
   }
   free(tmp);
   return st;
