@@ -230,13 +230,13 @@ int engine_init(struct engine *e, const struct case_def *c, const char *outdir,
   e->next_checkpoint = c->checkpoint_interval;
   if (setup_space(e)) return 1;
   int status = restart ? engine_checkpoint_read(e, restart) : generate_particles(e);
-  if (!status) status = lock_output(e);   /* not before: a refused restart creates no folder */
   if (status) return status;
   engine_assemble(e);
   if (distribute_particles(e)) return 1;
   e->n_repartitions = 0;
   engine_print_pipeline(e);
-  return engine_open_output(e);
+  /* not before: bad input found in the set-up creates no folder */
+  return lock_output(e) ? 1 : engine_open_output(e);
 }
 
 /* Free the free-surface work arrays (region, flags, eigenvalues, normals) and clear them. */
