@@ -49,19 +49,21 @@ static int open_csv(const struct engine *e, struct csv_table *t, int *fresh) {
   return t->f ? 0 : -1;
 }
 
-/* Rank 0: the row (or header) just printed into table t must now be in the file: flushed, or
- * else t is marked failed and cut back to its complete rows when closed. 0, or 3 with a message
- * naming the file and the system's reason. */
-static int end_row(const struct engine *e, struct csv_table *t) {
-  if (!t->error && !ferror(t->f) && fflush(t->f) == 0) {
-    t->complete = ftell(t->f);
-    return 0;
-  }
-  if (!t->error) {
-    t->error = errno ? errno : EIO;
-    fprintf(stderr, "mpsph: cannot write %s/%s: %s\n", e->outdir, t->name, strerror(t->error));
-  }
+/* Rank 0: mark table t failed with the system's reason `reason` (an errno; the first failure
+ * counts) and say so, naming the file. Returns 3. */
+static int table_failed(const struct engine *e, struct csv_table *t, int reason) {
+  if (t->error) return 3;
+  t->error = reason ? reason : EIO;
+  fprintf(stderr, "mpsph: cannot write %s/%s: %s\n", e->outdir, t->name, strerror(t->error));
   return 3;
+}
+
+/* Rank 0: the row (or header) just printed into table t must now be in the file: flushed, or
+ * else t is marked failed and cut back to its complete rows when closed. 0 or 3. */
+static int end_row(const struct engine *e, struct csv_table *t) {
+  if (t->error || ferror(t->f) || fflush(t->f) != 0) return table_failed(e, t, errno);
+  t->complete = ftell(t->f);
+  return 0;
 }
 
 /* Collective: rank 0's status of its table writes, on every rank. */
@@ -87,8 +89,8 @@ static void stats_header(const struct engine *e) {
  * message. */
 static int open_tables(struct engine *e) {
   int fresh_stats, fresh_probes = 0;
-  int failed = open_csv(e, &e->stats, &fresh_stats) || (e->c->n_probes && open_csv(e, &e->probes, &fresh_probes));
-  if (failed) {
+  if (open_csv(e, &e->stats, &fresh_stats) ||
+      (e->c->n_probes && open_csv(e, &e->probes, &fresh_probes))) {
     fprintf(stderr, "mpsph: cannot open stats.csv or probes.csv in '%s': %s\n", e->outdir, strerror(errno));
     return 1;
   }
@@ -120,11 +122,7 @@ static int close_table(const struct engine *e, struct csv_table *t) {
   char path[1200];
   if (!t->f) return 0;
   int status = end_row(e, t);
-  if (fclose(t->f) != 0 && !status) {
-    t->error = errno;
-    fprintf(stderr, "mpsph: cannot write %s/%s: %s\n", e->outdir, t->name, strerror(errno));
-    status = 3;
-  }
+  if (fclose(t->f) != 0) status = table_failed(e, t, errno);
   snprintf(path, sizeof path, "%s/%s", e->outdir, t->name);
   if (t->error && truncate(path, t->complete) != 0)
     fprintf(stderr, "mpsph: cannot cut %s back to its complete rows: %s\n", path, strerror(errno));
@@ -140,11 +138,9 @@ int engine_close_output(struct engine *e) {
 
 /* Rank 0: table t flushed and, with fsync, on disk; 0 or 3 with a message. */
 static int sync_table(const struct engine *e, struct csv_table *t) {
-  if (!t->f || end_row(e, t)) return t->f ? 3 : 0;
-  if (fsync(fileno(t->f)) == 0) return 0;
-  t->error = errno;
-  fprintf(stderr, "mpsph: cannot write %s/%s: %s\n", e->outdir, t->name, strerror(errno));
-  return 3;
+  if (!t->f) return 0;
+  if (end_row(e, t)) return 3;
+  return fsync(fileno(t->f)) == 0 ? 0 : table_failed(e, t, errno);
 }
 
 int engine_checkpoint(struct engine *e) {
