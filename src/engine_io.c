@@ -45,8 +45,9 @@ static int open_csv(const struct engine *e, struct csv_table *t, int *fresh) {
   snprintf(path, sizeof(path), "%s/%s", e->outdir, t->name);
   *fresh = !e->restarted || access(path, F_OK) != 0;
   t->f = *fresh ? fopen(path, "w") : trim_csv(path, e->step) ? NULL : fopen(path, "a");
-  t->complete = t->f ? ftell(t->f) : 0;
-  return t->f ? 0 : -1;
+  if (!t->f || fseek(t->f, 0, SEEK_END) != 0) return -1;
+  t->complete = ftell(t->f);
+  return 0;
 }
 
 /* Rank 0: mark table t failed with the system's reason `reason` (an errno; the first failure

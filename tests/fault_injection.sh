@@ -20,6 +20,7 @@ if [ "$(id -u)" -ne 0 ] && [ -z "${MPSPH_FAULT_NS:-}" ] && unshare -rm true 2>/d
   MPSPH_FAULT_NS=1 exec unshare -rm bash "$0" "$@"   # root in a namespace of our own: tmpfs
 fi
 out=$(mktemp -d)
+[ -z "${MPSPH_FAULT_NS:-}" ] || export TMPDIR=$out   # Open MPI's session folder: ours, not root's
 disk=$out/disk
 mkdir "$disk"
 trap 'umount "$disk" 2>/dev/null || true; rm -rf "$out"' EXIT
@@ -38,12 +39,11 @@ mpsph() {
     bash -c 'build/mpsph "$@"; s=$?; echo "rank status $s"; exit $s' \
     _ run "$case" -o "$dir" "${base[@]}" "$@" > "$dir.log" 2>&1 || code=$?
   [ "$code" -ne 124 ] || { echo "FAIL: $dir: no end within $LIMIT s (a hang)"; tail -20 "$dir.log"; exit 1; }
-  local ranks
-  ranks=$(grep -o 'rank status [0-9]*' "$dir.log" | sort | uniq -c)
+  local each all
+  each=$(grep -o 'rank status [0-9]*' "$dir.log" | wc -l)
+  all=$(grep -o 'rank status [0-9]*' "$dir.log" | sort -u)
   status=mixed
-  if [ "$(echo "$ranks" | wc -l)" -eq 1 ] && [ "$(echo $ranks | cut -d' ' -f1)" -eq "$np" ]; then
-    status=$(echo $ranks | cut -d' ' -f4)
-  fi
+  if [ "$each" = "$np" ] && [ "$(echo "$all" | wc -l)" = 1 ]; then status=${all##* }; fi
 }
 
 # failed NP OUTDIR FILE: the run ended with status 3 on every rank, the message names
