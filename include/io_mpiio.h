@@ -15,8 +15,9 @@
  *  in the environment and NAME in path, the last rank's writes fail as if the disk were full. */
 void mpiio_watch_begin(const char *path);
 
-/** 0 if no watched write of this rank failed since mpiio_watch_begin; else 3, with "cannot
- *  write <path>: <reason>" (the system's reason, e.g. "No space left on device") in err. */
+/** 0 outside a watch, or if no watched write of this rank failed since mpiio_watch_begin; else
+ *  3, with "cannot write <path>: <reason>" (the system's reason, e.g. "No space left on
+ *  device") in err. */
 int mpiio_watch_failed(char *err, size_t len);
 
 /** Stop watching (after the file is closed). */

@@ -22,6 +22,11 @@ int outdir_probe(const char *path, char *err, size_t err_len);
  *  output folder '<path>': <reason>" in err. */
 int outdir_lock(const char *path, int *fd, char *err, size_t err_len);
 
+/** Whether the file system of the folder of `file` has `bytes` free (for root, also the blocks
+ *  reserved to root). Returns 0 (also when it cannot tell), or 3 with "cannot write <file>: No
+ *  space left on device (it needs at least N MB, M MB are free)" in err. */
+int outdir_room(const char *file, double bytes, char *err, size_t err_len);
+
 /** Write dir/name through the temporary file dir/name.tmp, renamed when complete, so that a crash
  *  never leaves a half-written file in its place: fill(f, ctx) writes the content. Returns 0, or
  *  -1 with errno set (the previous file, if any, is left as it was; the temporary one removed). */

@@ -13,6 +13,7 @@
 #include <string.h>
 #include <unistd.h>
 #include "io_mpiio.h"
+#include "outdir.h"
 
 /* Bytes one rank hands to one H5Dwrite: MPI-IO counts are int, so stay well below 2 GiB.
  * Can be lowered at compile time to exercise the multi-call path. */
@@ -485,6 +486,33 @@ static int publish(const char *tmp, const char *path, int status, MPI_Comm comm,
     H5Eset_auto2(H5E_DEFAULT, old_func, old_data);                \
   } while (0)
 
+/* The bytes of the datasets and text attributes of the file (extra NULL: a snapshot) of p on
+ * every rank of comm: a lower bound of its size (the metadata adds a few kB). Collective. */
+static double file_bytes(const struct snapshot_info *info, const struct parts *p,
+                         const struct checkpoint_extra *extra, MPI_Comm comm) {
+  struct field fields[MAX_FIELDS];
+  double row = 0, rows = (double)p->n_owned, total;
+  int n = particle_fields(p, extra && p->wall, fields);
+  for (int k = 0; k < n; k++) row += (double)fields[k].size * fields[k].ncomp;
+  MPI_Allreduce(&rows, &total, 1, MPI_DOUBLE, MPI_SUM, comm);
+  double text = (info->case_yaml ? strlen(info->case_yaml) : 0) +
+                (info->code_version ? strlen(info->code_version) : 0);
+  return total * row + text + (extra ? 16.0 * extra->n_snapshots : 0);
+}
+
+/* Collective: 0, or 3 on every rank when rank 0 finds less free space than `bytes` in the file
+ * system of path (message: the sizes). Writing into a file system with no room left would
+ * fail part-way, and Open MPI's own MPI-IO (ompio) can then hang inside its collective write
+ * with 3 ranks or more; this check keeps the common case, a disk filled by the snapshots of
+ * the run, out of that. Skipped with MPSPH_TEST_NO_ROOM_CHECK=1 (a test hook). */
+static int room_for(const char *path, double bytes, MPI_Comm comm, char *err, size_t len) {
+  int rank, st = 0;
+  const char *skip = getenv("MPSPH_TEST_NO_ROOM_CHECK");
+  MPI_Comm_rank(comm, &rank);
+  if (rank == 0 && !(skip && !strcmp(skip, "1"))) st = outdir_room(path, bytes, err, len);
+  return agree(st, comm, err, len);
+}
+
 /* Collective file (via path.tmp) of the owned particles, with extra for a checkpoint. */
 static int write_via_tmp(const char *path, const struct snapshot_info *info,
                          const struct parts *p, const struct checkpoint_extra *extra,
@@ -499,6 +527,7 @@ static int write_via_tmp(const char *path, const struct snapshot_info *info,
               info->dimension);
   else st = 0;
   st = agree(st, comm, err, len);
+  if (!st) st = room_for(path, file_bytes(info, p, extra, comm), comm, err, len);
   if (!st) {
     snprintf(tmp, n, "%s.tmp", path);
     mpiio_watch_begin(path);

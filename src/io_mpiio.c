@@ -13,10 +13,10 @@
 #include "io_mpiio.h"
 
 #include <errno.h>
+#include <libgen.h>
 #include <mpi.h>
 #include <stdio.h>
 #include <stdlib.h>
-#include <libgen.h>
 #include <string.h>
 #include <sys/statvfs.h>
 
@@ -77,6 +77,8 @@ static int outcome(int code, int sys_errno, MPI_Status *status, MPI_Datatype typ
   return MPI_SUCCESS;
 }
 
+/* The intercepted calls: each calls the library's (PMPI_) version and passes its result
+ * through `outcome`. An independent write (HDF5 writes some metadata from one rank): */
 int MPI_File_write_at(MPI_File fh, MPI_Offset offset, const void *buf, int count,
                       MPI_Datatype type, MPI_Status *status) {
   errno = 0;
@@ -84,6 +86,7 @@ int MPI_File_write_at(MPI_File fh, MPI_Offset offset, const void *buf, int count
   return outcome(code, errno, status, type, count);
 }
 
+/* A collective write (the datasets; the metadata with collective metadata writes). */
 int MPI_File_write_at_all(MPI_File fh, MPI_Offset offset, const void *buf, int count,
                           MPI_Datatype type, MPI_Status *status) {
   errno = 0;
@@ -91,12 +94,14 @@ int MPI_File_write_at_all(MPI_File fh, MPI_Offset offset, const void *buf, int c
   return outcome(code, errno, status, type, count);
 }
 
+/* Collective: the file extended or cut to size (HDF5: at create and at close). */
 int MPI_File_set_size(MPI_File fh, MPI_Offset size) {
   errno = 0;
   int code = PMPI_File_set_size(fh, size);
   return outcome(code, errno, NULL, MPI_BYTE, 0);
 }
 
+/* Collective: the file's data on the storage device (HDF5: H5Fflush). */
 int MPI_File_sync(MPI_File fh) {
   errno = 0;
   int code = PMPI_File_sync(fh);
@@ -135,7 +140,7 @@ static void failure_reason(char *reason, int len) {
 
 int mpiio_watch_failed(char *err, size_t len) {
   char reason[MPI_MAX_ERROR_STRING];
-  if (!watch.failed) return 0;
+  if (!watch.on || !watch.failed) return 0;
   failure_reason(reason, (int)sizeof reason);
   if (err && len) snprintf(err, len, "cannot write %s: %s", watch.path, reason);
   return 3;

@@ -4,10 +4,12 @@
 
 #include <errno.h>
 #include <fcntl.h>
+#include <libgen.h>
 #include <limits.h>
 #include <stdio.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <sys/statvfs.h>
 #include <time.h>
 #include <unistd.h>
 
@@ -141,4 +143,16 @@ int outdir_lock(const char *path, int *fd, char *err, size_t err_len) {
   fprintf(stderr, "mpsph: warning: cannot lock the output folder '%s' (%s): nothing keeps a second "
           "run out of it\n", path, strerror(saved));
   return 0;
+}
+
+int outdir_room(const char *file, double bytes, char *err, size_t err_len) {
+  char dir[PATH_MAX];
+  struct statvfs fs;
+  snprintf(dir, sizeof dir, "%s", file);
+  if (statvfs(dirname(dir), &fs) != 0) return 0;   /* not known: the write will tell */
+  double room = (double)fs.f_frsize * (double)(geteuid() == 0 ? fs.f_bfree : fs.f_bavail);
+  if (room >= bytes) return 0;
+  snprintf(err, err_len, "cannot write %s: %s (it needs at least %.3g MB, %.3g MB are free)",
+           file, strerror(ENOSPC), bytes / 1e6, room / 1e6);
+  return 3;
 }
