@@ -486,8 +486,10 @@ static int publish(const char *tmp, const char *path, int status, MPI_Comm comm,
     H5Eset_auto2(H5E_DEFAULT, old_func, old_data);                \
   } while (0)
 
-/* The bytes of the datasets and text attributes of the file (extra NULL: a snapshot) of p on
- * every rank of comm: a lower bound of its size (the metadata adds a few kB). Collective. */
+#define METADATA_BYTES 65536.0   /* allowed for HDF5's metadata: a few kB per dataset */
+
+/* The size of the file (extra NULL: a snapshot) of p on every rank of comm, about: its datasets,
+ * text attributes and METADATA_BYTES. Collective. */
 static double file_bytes(const struct snapshot_info *info, const struct parts *p,
                          const struct checkpoint_extra *extra, MPI_Comm comm) {
   struct field fields[MAX_FIELDS];
@@ -497,14 +499,15 @@ static double file_bytes(const struct snapshot_info *info, const struct parts *p
   MPI_Allreduce(&rows, &total, 1, MPI_DOUBLE, MPI_SUM, comm);
   double text = (info->case_yaml ? strlen(info->case_yaml) : 0) +
                 (info->code_version ? strlen(info->code_version) : 0);
-  return total * row + text + (extra ? 16.0 * extra->n_snapshots : 0);
+  return total * row + text + (extra ? 16.0 * extra->n_snapshots : 0) + METADATA_BYTES;
 }
 
 /* Collective: 0, or 3 on every rank when rank 0 finds less free space than `bytes` in the file
- * system of path (message: the sizes). Writing into a file system with no room left would
- * fail part-way, and Open MPI's own MPI-IO (ompio) can then hang inside its collective write
- * with 3 ranks or more; this check keeps the common case, a disk filled by the snapshots of
- * the run, out of that. Skipped with MPSPH_TEST_NO_ROOM_CHECK=1 (a test hook). */
+ * system of path (message: the sizes). A write into a file system with no room left fails
+ * part-way, and Open MPI's own MPI-IO (ompio) can lose such a failure of its collective write
+ * on 3 ranks or more and then hang in MPI_File_sync; this check keeps the common case, a disk
+ * filled by the run's own snapshots, out of that. Skipped with MPSPH_TEST_NO_ROOM_CHECK=1 (a
+ * test hook). */
 static int room_for(const char *path, double bytes, MPI_Comm comm, char *err, size_t len) {
   int rank, st = 0;
   const char *skip = getenv("MPSPH_TEST_NO_ROOM_CHECK");
@@ -530,7 +533,7 @@ static int write_via_tmp(const char *path, const struct snapshot_info *info,
   if (!st) st = room_for(path, file_bytes(info, p, extra, comm), comm, err, len);
   if (!st) {
     snprintf(tmp, n, "%s.tmp", path);
-    mpiio_watch_begin(path);
+    mpiio_watch_begin(path, comm);
     st = write_file(tmp, info, p, extra, comm, err, len);
     mpiio_watch_end();
     st = publish(tmp, path, st, comm, err, len);
