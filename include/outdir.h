@@ -24,7 +24,7 @@ int outdir_lock(const char *path, int *fd, char *err, size_t err_len);
 
 /** Whether the file system of the folder of `file` has `bytes` free (for root, also the blocks
  *  reserved to root). Returns 0 (also when it cannot tell), or 3 with "cannot write <file>: No
- *  space left on device (it needs at least N MB, M MB are free)" in err. */
+ *  space left on device (it needs about N MB, M MB are free)" in err. */
 int outdir_room(const char *file, double bytes, char *err, size_t err_len);
 
 /** Write dir/name through the temporary file dir/name.tmp, renamed when complete, so that a crash

@@ -152,7 +152,7 @@ int outdir_room(const char *file, double bytes, char *err, size_t err_len) {
   if (statvfs(dirname(dir), &fs) != 0) return 0;   /* not known: the write will tell */
   double room = (double)fs.f_frsize * (double)(geteuid() == 0 ? fs.f_bfree : fs.f_bavail);
   if (room >= bytes) return 0;
-  snprintf(err, err_len, "cannot write %s: %s (it needs at least %.3g MB, %.3g MB are free)",
+  snprintf(err, err_len, "cannot write %s: %s (it needs about %.3g MB, %.3g MB are free)",
            file, strerror(ENOSPC), bytes / 1e6, room / 1e6);
   return 3;
 }
