@@ -22,6 +22,14 @@
 
 struct engine;
 
+/** A CSV table of the output folder (stats.csv, probes.csv), appended row by row by rank 0. */
+struct csv_table {
+  FILE *f;                 /* NULL on the other ranks */
+  const char *name;        /* file name in the output folder */
+  long complete;           /* bytes of its complete rows: a failed row is cut back to here */
+  int error;               /* errno of the first failed write, 0 while none */
+};
+
 /** One operation of the per-stage pipeline: a pass over particles/pairs, or a halo update. */
 struct stage_op {
   const char *name;
@@ -135,7 +143,8 @@ struct engine {
   long *snap_counts;
   double next_output, next_stats, next_probes, next_checkpoint, wall_start, next_progress;
   long last_snapshot_step, last_stats_step, last_probes_step;   /* -1 before the first */
-  FILE *stats, *probes;
+  struct csv_table stats, probes;
+  int lock_fd;                     /* rank 0: the output folder's lock (outdir_lock), else -1 */
   double *probe_buf;               /* the probes' samples of one row, sized at the first row */
   long probe_buf_len;
   int restarted;                   /* continues from a checkpoint */
@@ -148,7 +157,8 @@ struct engine {
   int dual_ops[ENGINE_MAX_OPS];    /* index in ops of each of its operations, -1 when absent */
 };
 
-/** Set up the engine for case c: generate particles (or, with `restart` non-NULL, read them and
+/** Set up the engine for case c: lock the output folder for the run (refused with 1 when
+ *  another run holds it), generate particles (or, with `restart` non-NULL, read them and
  *  the run state from that checkpoint), partition, distribute, open outputs.
  *  Returns 0, or the exit status (1 bad input, 3 I/O) with a message printed on rank 0. */
 int engine_init(struct engine *e, const struct case_def *c, const char *outdir,
@@ -172,7 +182,7 @@ void engine_report(struct engine *e, long steps, double loop_seconds);
 /** Print (stderr) the step, time, stage, id, phase and position of particle i and what tripped. */
 void engine_report_particle(const struct engine *e, long i, const char *what);
 
-/** Free everything. */
+/** Free everything and release the output folder's lock. */
 void engine_free(struct engine *e);
 
 /** Advance one RK4 step (all stages, dt from the first stage), or with scheme riemann one
@@ -261,8 +271,12 @@ void engine_assemble(struct engine *e);
 void engine_print_pipeline(const struct engine *e);
 
 /** Snapshot, stats and probe output when due (force = write them now), then the checkpoint
- *  when output.checkpoint_interval is due (never when forced). Returns 0 or 3. */
+ *  when output.checkpoint_interval is due (never when forced). Returns 0 or 3 (every rank). */
 int engine_output(struct engine *e, int force);
+
+/** Collective: make the rows of stats.csv and probes.csv durable (fsync), then write
+ *  checkpoint.h5, whose restart keeps those rows. Returns 0 or 3 with a message (every rank). */
+int engine_checkpoint(struct engine *e);
 
 /** The /header of a snapshot or checkpoint at the given time [s] and step. */
 struct snapshot_info engine_snapshot_info(const struct engine *e, double time, long step);
@@ -276,7 +290,8 @@ int engine_open_output(struct engine *e);
  *  of the step (unstable_last_good.h5). Collective. Returns 0 or 3. */
 int engine_write_failure(struct engine *e);
 
-/** Close the output files and write the final XDMF index. */
-void engine_close_output(struct engine *e);
+/** Collective: close stats.csv and probes.csv; a table whose write failed is cut back to its
+ *  complete rows. Returns 0, or 3 (every rank) when a write or the close failed. */
+int engine_close_output(struct engine *e);
 
 #endif

@@ -29,13 +29,14 @@ double probe_sums_shepard(const struct probe_sums *s);
  *  neighbours lie on a line, or fewer than dim + 1). */
 double probe_sums_mls(const struct probe_sums *s);
 
-/** Write the probes.csv header (step, time, the columns of every probe) to f. */
+/** Write the probes.csv header (step, time, the columns of every probe) to f (the caller
+ *  flushes it). */
 void probes_write_header(FILE *f, const struct case_def *c);
 
 /** Evaluate every probe (collective) and, on rank 0, append the row of the current step and
  *  time to f: pressure [Pa], elevation [m] (nan when the phase is absent from the line) and,
  *  per integral, volume [m^dim], kinetic and potential energy [J, per metre in 2D] and centre
- *  of mass [m]. */
+ *  of mass [m]. The caller flushes f. */
 void probes_write_row(struct engine *e, FILE *f);
 
 #endif

@@ -1,12 +1,15 @@
 /* engine.c — set-up of a rank's solver state, the rebuild after each step, load balance and the
  * time loop. */
+#include <limits.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
+#include <unistd.h>
 #include "engine.h"
 #include "engine_checkpoint.h"
 #include "init.h"
+#include "outdir.h"
 #include "partition.h"
 #include "redistribute.h"
 #ifdef __GLIBC__
@@ -152,6 +155,15 @@ static int balance(struct engine *e) {
   return status;
 }
 
+/* Rank 0 locks the output folder for the run (outdir_lock). Returns 0, or 1 on every rank. */
+static int lock_output(struct engine *e) {
+  char err[PATH_MAX + 256];
+  int status = e->rank == 0 ? outdir_lock(e->outdir, &e->lock_fd, err, sizeof err) : 0;
+  if (status) report(e, err);
+  MPI_Bcast(&status, 1, MPI_INT, 0, e->comm);
+  return status;
+}
+
 /* Kernel, grid, halo depth. Returns 0 or 1. */
 static int setup_space(struct engine *e) {
   const struct case_def *c = e->c;
@@ -210,6 +222,7 @@ int engine_init(struct engine *e, const struct case_def *c, const char *outdir,
   e->comm = comm;
   e->outdir = outdir;
   e->restarted = restart != NULL;
+  e->lock_fd = -1;
   MPI_Comm_rank(comm, &e->rank);
   MPI_Comm_size(comm, &e->n_ranks);
   e->wall_start = MPI_Wtime();
@@ -222,7 +235,8 @@ int engine_init(struct engine *e, const struct case_def *c, const char *outdir,
   if (distribute_particles(e)) return 1;
   e->n_repartitions = 0;
   engine_print_pipeline(e);
-  return engine_open_output(e);
+  /* not before: bad input found in the set-up creates no folder */
+  return lock_output(e) ? 1 : engine_open_output(e);
 }
 
 /* Free the free-surface work arrays (region, flags, eigenvalues, normals) and clear them. */
@@ -320,14 +334,16 @@ int engine_run(struct engine *e) {
   }
   if (signo && engine_finished(e)) signo = 0;   /* a signal during the last step: a normal end */
   if (!status && !signo) status = engine_output(e, 1);
-  if (!status) status = engine_checkpoint_write(e);
+  if (!status) status = engine_checkpoint(e);
+  if (engine_close_output(e) && !status) status = 3;
   if (!status) report_end(e, signo, e->step - first_step);
-  engine_close_output(e);
   engine_report(e, e->step - first_step, MPI_Wtime() - loop_start);
   return status;
 }
 
 void engine_free(struct engine *e) {
+  if (e->lock_fd >= 0) close(e->lock_fd);   /* the output folder's lock ends with the run */
+  e->lock_fd = -1;
   engine_work_free(&e->w);
   nlist_free(&e->nl);
   halo_free(&e->halo);

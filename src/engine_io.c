@@ -18,61 +18,92 @@
 /* Write the text ctx to f (an outdir_write_file filler). */
 static void put_text(FILE *f, const void *text) { fputs(text, f); }
 
-/* Drop the rows of the CSV file at path whose step (first column) is above last_step, keeping
- * the header, through a temporary file. Returns 0 or -1. */
+/* Drop the rows of the CSV file at path whose step (first column) is above last_step, and a
+ * last row cut short by a failed or interrupted write (no newline), keeping the header, through
+ * a temporary file. Returns 0 or -1. */
 static int trim_csv(const char *path, long last_step) {
   char tmp[1300], *line = NULL;
   size_t cap = 0;
+  ssize_t n;
   snprintf(tmp, sizeof(tmp), "%s.tmp", path);
   FILE *in = fopen(path, "r"), *out = in ? fopen(tmp, "w") : NULL;
   int ok = out != NULL;
-  for (long row = 0; ok && getline(&line, &cap, in) > 0; row++)
-    if (row == 0 || strtol(line, NULL, 10) <= last_step) ok = fputs(line, out) >= 0;
+  for (long row = 0; ok && (n = getline(&line, &cap, in)) > 0; row++)
+    if (line[n - 1] == '\n' && (row == 0 || strtol(line, NULL, 10) <= last_step))
+      ok = fputs(line, out) >= 0;
   free(line);
   if (in) fclose(in);
   if (out) ok &= fclose(out) == 0;
   return ok ? rename(tmp, path) : -1;
 }
 
-/* Open dir/name for rows. A fresh run truncates it; a restart keeps the rows up to its step and
- * appends. *fresh = 1 when the file is new (the caller writes the header). NULL on failure. */
-static FILE *open_csv(const struct engine *e, const char *name, int *fresh) {
+/* Open table t (t->name in the output folder) for rows. A fresh run truncates it; a restart
+ * keeps the rows up to its step and appends. *fresh = 1 when the file is new (the caller writes
+ * the header). Returns 0, or -1 with errno set. */
+static int open_csv(const struct engine *e, struct csv_table *t, int *fresh) {
   char path[1200];
-  snprintf(path, sizeof(path), "%s/%s", e->outdir, name);
+  snprintf(path, sizeof(path), "%s/%s", e->outdir, t->name);
   *fresh = !e->restarted || access(path, F_OK) != 0;
-  if (*fresh) return fopen(path, "w");
-  return trim_csv(path, e->step) ? NULL : fopen(path, "a");
+  t->f = *fresh ? fopen(path, "w") : trim_csv(path, e->step) ? NULL : fopen(path, "a");
+  if (!t->f || fseek(t->f, 0, SEEK_END) != 0) return -1;
+  t->complete = ftell(t->f);
+  return 0;
+}
+
+/* Rank 0: mark table t failed with the system's reason `reason` (an errno; the first failure
+ * counts) and say so, naming the file. Returns 3. */
+static int table_failed(const struct engine *e, struct csv_table *t, int reason) {
+  if (t->error) return 3;
+  t->error = reason ? reason : EIO;
+  fprintf(stderr, "mpsph: cannot write %s/%s: %s\n", e->outdir, t->name, strerror(t->error));
+  return 3;
+}
+
+/* Rank 0: the row (or header) just printed into table t must now be in the file: flushed, or
+ * else t is marked failed and cut back to its complete rows when closed. 0 or 3. */
+static int end_row(const struct engine *e, struct csv_table *t) {
+  if (t->error || ferror(t->f) || fflush(t->f) != 0) return table_failed(e, t, errno);
+  t->complete = ftell(t->f);
+  return 0;
+}
+
+/* Collective: rank 0's status of its table writes, on every rank. */
+static int tables_agree(const struct engine *e, int status) {
+  MPI_Bcast(&status, 1, MPI_INT, 0, e->comm);
+  return status;
 }
 
 static void stats_header(const struct engine *e) {
   const struct case_def *c = e->c;
-  fprintf(e->stats, "step,time,dt");
+  FILE *f = e->stats.f;
+  fprintf(f, "step,time,dt");
   for (int ph = 0; ph < c->n_phases; ph++)
-    fprintf(e->stats, ",kinetic_energy_%s,mass_%s,volume_%s,max_density_deviation_%s", c->phases[ph].name,
+    fprintf(f, ",kinetic_energy_%s,mass_%s,volume_%s,max_density_deviation_%s", c->phases[ph].name,
             c->phases[ph].name, c->phases[ph].name, c->phases[ph].name);
   const char *axis = "xyz";
-  for (int d = 0; d < c->dimension; d++) fprintf(e->stats, ",momentum_%c", axis[d]);
-  fprintf(e->stats, ",wall_seconds,wall_guard_hits\n");
-  fflush(e->stats);
+  for (int d = 0; d < c->dimension; d++) fprintf(f, ",momentum_%c", axis[d]);
+  fprintf(f, ",wall_seconds,wall_guard_hits\n");
 }
 
 /* Rank 0: open stats.csv and probes.csv (if the case has probes), headers on new files.
- * Returns 0 or 1 with a message. */
+ * Returns 0, 1 when a file cannot be opened, or 3 when a header cannot be written, with a
+ * message. */
 static int open_tables(struct engine *e) {
   int fresh_stats, fresh_probes = 0;
-  e->stats = open_csv(e, "stats.csv", &fresh_stats);
-  if (e->stats && e->c->n_probes) e->probes = open_csv(e, "probes.csv", &fresh_probes);
-  if (!e->stats || (e->c->n_probes && !e->probes)) {
+  if (open_csv(e, &e->stats, &fresh_stats) ||
+      (e->c->n_probes && open_csv(e, &e->probes, &fresh_probes))) {
     fprintf(stderr, "mpsph: cannot open stats.csv or probes.csv in '%s': %s\n", e->outdir, strerror(errno));
     return 1;
   }
   if (fresh_stats) stats_header(e);
-  if (fresh_probes) probes_write_header(e->probes, e->c);
-  return 0;
+  if (fresh_probes) probes_write_header(e->probes.f, e->c);
+  return end_row(e, &e->stats) || (e->probes.f && end_row(e, &e->probes)) ? 3 : 0;
 }
 
 int engine_open_output(struct engine *e) {
   e->case_yaml = case_to_yaml(e->c);
+  e->stats.name = "stats.csv";
+  e->probes.name = "probes.csv";
   int status = 0;
   if (e->rank == 0) {
     if (outdir_create(e->outdir) || outdir_write_file(e->outdir, "config.yaml", put_text, e->case_yaml)) {
@@ -86,10 +117,37 @@ int engine_open_output(struct engine *e) {
   return status;
 }
 
-void engine_close_output(struct engine *e) {
-  if (e->stats) fclose(e->stats);
-  if (e->probes) fclose(e->probes);
-  e->stats = e->probes = NULL;
+/* Rank 0: close table t (if open); a table whose write failed is cut back to its complete
+ * rows, so that no partial row stays to be glued to the next run's first. 0 or 3. */
+static int close_table(const struct engine *e, struct csv_table *t) {
+  char path[1200];
+  if (!t->f) return 0;
+  int status = end_row(e, t);
+  if (fclose(t->f) != 0) status = table_failed(e, t, errno);
+  snprintf(path, sizeof path, "%s/%s", e->outdir, t->name);
+  if (t->error && truncate(path, t->complete) != 0)
+    fprintf(stderr, "mpsph: cannot cut %s back to its complete rows: %s\n", path, strerror(errno));
+  t->f = NULL;
+  return status;
+}
+
+int engine_close_output(struct engine *e) {
+  int status = close_table(e, &e->stats);
+  if (close_table(e, &e->probes)) status = 3;
+  return tables_agree(e, status);
+}
+
+/* Rank 0: table t flushed and, with fsync, on disk; 0 or 3 with a message. */
+static int sync_table(const struct engine *e, struct csv_table *t) {
+  if (!t->f) return 0;
+  if (end_row(e, t)) return 3;
+  return fsync(fileno(t->f)) == 0 ? 0 : table_failed(e, t, errno);
+}
+
+int engine_checkpoint(struct engine *e) {
+  int status = 0;
+  if (e->rank == 0) status = sync_table(e, &e->stats) | sync_table(e, &e->probes);
+  return tables_agree(e, status) ? 3 : engine_checkpoint_write(e);
 }
 
 /* Swap the owned particles' state with the RK start state of the step (x0, v0, rho0), pressure
@@ -181,12 +239,12 @@ static void write_stats(struct engine *e) {
   MPI_Reduce(e->rank ? sum : MPI_IN_PLACE, sum, 3 * np + dim + 1, MPI_DOUBLE, MPI_SUM, 0, e->comm);
   MPI_Reduce(e->rank ? dev : MPI_IN_PLACE, dev, np, MPI_DOUBLE, MPI_MAX, 0, e->comm);
   if (e->rank) return;
-  fprintf(e->stats, "%ld,%.10g,%.6g", e->step, e->time, e->dt);
+  FILE *f = e->stats.f;
+  fprintf(f, "%ld,%.10g,%.6g", e->step, e->time, e->dt);
   for (int ph = 0; ph < np; ph++)
-    fprintf(e->stats, ",%.10g,%.15g,%.12g,%.6g", sum[3 * ph], sum[3 * ph + 1], sum[3 * ph + 2], dev[ph]);
-  for (int d = 0; d < dim; d++) fprintf(e->stats, ",%.10g", sum[3 * np + d]);
-  fprintf(e->stats, ",%.3f,%.0f\n", MPI_Wtime() - e->wall_start, sum[3 * np + dim]);
-  fflush(e->stats);
+    fprintf(f, ",%.10g,%.15g,%.12g,%.6g", sum[3 * ph], sum[3 * ph + 1], sum[3 * ph + 2], dev[ph]);
+  for (int d = 0; d < dim; d++) fprintf(f, ",%.10g", sum[3 * np + d]);
+  fprintf(f, ",%.3f,%.0f\n", MPI_Wtime() - e->wall_start, sum[3 * np + dim]);
 }
 
 /* 1 if an output of period `interval` is due at the current time (advances *next). */
@@ -209,18 +267,24 @@ int engine_output(struct engine *e, int force) {
     e->last_snapshot_step = e->step;
     if (write_snapshot(e)) return 3;
   }
+  int rows = 0, status = 0;
   if (due(e->time, c->stats_interval, &e->next_stats, force) && e->last_stats_step != e->step) {
     e->last_stats_step = e->step;
     write_stats(e);
+    if (e->rank == 0) status |= end_row(e, &e->stats);
+    rows = 1;
   }
   if (probes) {
     e->last_probes_step = e->step;
-    probes_write_row(e, e->probes);
+    probes_write_row(e, e->probes.f);
+    if (e->rank == 0) status |= end_row(e, &e->probes);
+    rows = 1;
   }
+  if (rows && tables_agree(e, status)) return 3;
   /* last, so that it holds the schedule advanced by this step's outputs; the end of the run
    * writes its own */
   if (!force && c->checkpoint_interval > 0 &&
       due(e->time, c->checkpoint_interval, &e->next_checkpoint, 0) && !engine_finished(e))
-    return engine_checkpoint_write(e);
+    return engine_checkpoint(e);
   return 0;
 }

@@ -12,6 +12,8 @@
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
+#include "io_mpiio.h"
+#include "outdir.h"
 
 #include "mem.h"
 
@@ -61,11 +63,13 @@ static int fail(char *err, size_t len, const char *fmt, ...) {
 }
 
 /* Collective: 0 if every rank's status is 0, else 3 on every rank with the message of the
- * lowest failing rank copied into err. Also serves as a barrier. */
+ * lowest failing rank copied into err. While a file is written, a failed write of this rank
+ * (recorded by io_mpiio.c, hidden from HDF5) counts as a failure. Also serves as a barrier. */
 static int agree(int status, MPI_Comm comm, char *err, size_t len) {
   int rank, who, first;
   char msg[768] = "";
   MPI_Comm_rank(comm, &rank);
+  if (!status) status = mpiio_watch_failed(err, len);
   who = status ? rank : INT_MAX;
   MPI_Allreduce(&who, &first, 1, MPI_INT, MPI_MIN, comm);
   if (first == INT_MAX) return 0;
@@ -465,6 +469,9 @@ static int write_file(const char *tmp, const struct snapshot_info *info, const s
   if (g >= 0) H5Gclose(g);
   if (!st) st = write_fields(file, fields, n, &L, comm, err, len);
   if (!st && extra) st = write_run(file, extra, comm, err, len);
+  /* collective: the metadata out, then MPI_File_sync, so that a write the system reports late
+   * (NFS, quotas) fails here, before the rename */
+  if (!st && H5Fflush(file, H5F_SCOPE_GLOBAL) < 0) st = fail(err, len, "cannot flush %s", tmp);
   test_abort_hook(tmp);
   if (H5Fclose(file) < 0 && !st) st = fail(err, len, "cannot close %s", tmp);
   return agree(st, comm, err, len);
@@ -494,6 +501,36 @@ static int publish(const char *tmp, const char *path, int status, MPI_Comm comm,
     H5Eset_auto2(H5E_DEFAULT, old_func, old_data);                \
   } while (0)
 
+#define METADATA_BYTES 65536.0   /* allowed for HDF5's metadata: a few kB per dataset */
+
+/* The size of the file (extra NULL: a snapshot) of p on every rank of comm, about: its datasets,
+ * text attributes and METADATA_BYTES. Collective. */
+static double file_bytes(const struct snapshot_info *info, const struct parts *p,
+                         const struct checkpoint_extra *extra, MPI_Comm comm) {
+  struct field fields[MAX_FIELDS];
+  double row = 0, rows = (double)p->n_owned, total;
+  int n = particle_fields(p, extra && p->wall, fields);
+  for (int k = 0; k < n; k++) row += (double)fields[k].size * fields[k].ncomp;
+  MPI_Allreduce(&rows, &total, 1, MPI_DOUBLE, MPI_SUM, comm);
+  double text = (info->case_yaml ? strlen(info->case_yaml) : 0) +
+                (info->code_version ? strlen(info->code_version) : 0);
+  return total * row + text + (extra ? 16.0 * extra->n_snapshots : 0) + METADATA_BYTES;
+}
+
+/* Collective: 0, or 3 on every rank when rank 0 finds less free space than `bytes` in the file
+ * system of path (message: the sizes). A write into a file system with no room left fails
+ * part-way, and Open MPI's own MPI-IO (ompio) can lose such a failure of its collective write
+ * on 3 ranks or more and then hang in MPI_File_sync; this check keeps the common case, a disk
+ * filled by the run's own snapshots, out of that. Skipped with MPSPH_TEST_NO_ROOM_CHECK=1 (a
+ * test hook). */
+static int room_for(const char *path, double bytes, MPI_Comm comm, char *err, size_t len) {
+  int rank, st = 0;
+  const char *skip = getenv("MPSPH_TEST_NO_ROOM_CHECK");
+  MPI_Comm_rank(comm, &rank);
+  if (rank == 0 && !(skip && !strcmp(skip, "1"))) st = outdir_room(path, bytes, err, len);
+  return agree(st, comm, err, len);
+}
+
 /* Collective file (via path.tmp) of the owned particles, with extra for a checkpoint. */
 static int write_via_tmp(const char *path, const struct snapshot_info *info,
                          const struct parts *p, const struct checkpoint_extra *extra,
@@ -508,9 +545,13 @@ static int write_via_tmp(const char *path, const struct snapshot_info *info,
               info->dimension);
   else st = 0;
   st = agree(st, comm, err, len);
+  if (!st) st = room_for(path, file_bytes(info, p, extra, comm), comm, err, len);
   if (!st) {
     snprintf(tmp, n, "%s.tmp", path);
-    st = publish(tmp, path, write_file(tmp, info, p, extra, comm, err, len), comm, err, len);
+    mpiio_watch_begin(path, comm);
+    st = write_file(tmp, info, p, extra, comm, err, len);
+    mpiio_watch_end();
+    st = publish(tmp, path, st, comm, err, len);
   }
   free(tmp);
   return st;

@@ -1,12 +1,19 @@
-/* outdir.c — the output folder: mkdir -p, and a write probe that leaves nothing behind. */
+/* outdir.c — the output folder: mkdir -p, a write probe that leaves nothing behind, and the
+ * lock that keeps a second run out of it. */
 #include "outdir.h"
 
 #include <errno.h>
+#include <fcntl.h>
+#include <libgen.h>
 #include <limits.h>
 #include <stdio.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <sys/statvfs.h>
+#include <time.h>
 #include <unistd.h>
+
+#define LOCK_FILE ".mpsph.lock"   /* in the output folder; it stays there after the run */
 
 /* mkdir -p path; *created gets the length of the shortest prefix of path this call created (0 if
  * it created none). Returns 0, or -1 with errno set. */
@@ -82,5 +89,70 @@ int outdir_write_file(const char *dir, const char *name, void (*fill)(FILE *f, c
   fill(f, ctx);
   int ok = !ferror(f);
   ok &= fclose(f) == 0;
-  return ok ? rename(tmp, path) : -1;
+  if (ok && rename(tmp, path) == 0) return 0;
+  int saved = errno;
+  unlink(tmp);
+  errno = saved;
+  return -1;
+}
+
+/* Who holds the lock: "pid P on host H since T", written into the lock file by its holder. */
+static void write_holder(int fd) {
+  char host[256] = "?", when[64] = "?", text[512];
+  time_t now = time(NULL);
+  struct tm utc;
+  gethostname(host, sizeof host);
+  host[sizeof host - 1] = '\0';
+  if (gmtime_r(&now, &utc)) strftime(when, sizeof when, "%Y-%m-%d %H:%M:%S UTC", &utc);
+  int n = snprintf(text, sizeof text, "pid %ld on host %s since %s\n", (long)getpid(), host, when);
+  if (ftruncate(fd, 0) == 0 && pwrite(fd, text, (size_t)n, 0) == n) return;
+  /* the lock holds without the text: a refused run then names no holder */
+}
+
+/* The holder's text of lock file fd (without its newline) into text; "holder unknown" if none. */
+static void read_holder(int fd, char *text, size_t len) {
+  ssize_t n = pread(fd, text, len - 1, 0);
+  text[n > 0 ? n : 0] = '\0';
+  text[strcspn(text, "\n")] = '\0';
+  if (!text[0]) snprintf(text, len, "holder unknown");
+}
+
+int outdir_lock(const char *path, int *fd, char *err, size_t err_len) {
+  char file[PATH_MAX], holder[512];
+  struct flock lock = {.l_type = F_WRLCK, .l_whence = SEEK_SET, .l_start = 0, .l_len = 0};
+  *fd = -1;
+  if (snprintf(file, sizeof file, "%s/" LOCK_FILE, path) >= (int)sizeof file) errno = ENAMETOOLONG;
+  else if (outdir_create(path) == 0) *fd = open(file, O_RDWR | O_CREAT | O_CLOEXEC, 0666);
+  if (*fd < 0) {
+    snprintf(err, err_len, "cannot write to the output folder '%s': %s", path, strerror(errno));
+    return 1;
+  }
+  if (fcntl(*fd, F_SETLK, &lock) == 0) {
+    write_holder(*fd);
+    return 0;
+  }
+  int busy = errno == EACCES || errno == EAGAIN, saved = errno;
+  if (busy) read_holder(*fd, holder, sizeof holder);
+  close(*fd);
+  *fd = -1;
+  if (busy) {
+    snprintf(err, err_len, "the output folder '%s' is in use by another run (%s): wait for it to "
+             "end, or choose another -o", path, holder);
+    return 1;
+  }
+  fprintf(stderr, "mpsph: warning: cannot lock the output folder '%s' (%s): nothing keeps a second "
+          "run out of it\n", path, strerror(saved));
+  return 0;
+}
+
+int outdir_room(const char *file, double bytes, char *err, size_t err_len) {
+  char dir[PATH_MAX];
+  struct statvfs fs;
+  snprintf(dir, sizeof dir, "%s", file);
+  if (statvfs(dirname(dir), &fs) != 0) return 0;   /* not known: the write will tell */
+  double room = (double)fs.f_frsize * (double)(geteuid() == 0 ? fs.f_bfree : fs.f_bavail);
+  if (room >= bytes) return 0;
+  snprintf(err, err_len, "cannot write %s: %s (it needs about %.3g MB, %.3g MB are free)",
+           file, strerror(ENOSPC), bytes / 1e6, room / 1e6);
+  return 3;
 }

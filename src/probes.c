@@ -71,7 +71,6 @@ void probes_write_header(FILE *f, const struct case_def *c) {
       fprintf(f, ",%s", col);
     }
   fprintf(f, "\n");
-  fflush(f);
 }
 
 /* ---- sample points ---- */
@@ -237,6 +236,5 @@ void probes_write_row(struct engine *e, FILE *f) {
     fprintf(f, "%ld,%.10g", e->step, e->time);
     for (int k = 0, at = 0; k < c->n_probes; at += n[k++]) print_probe(f, e, &c->probes[k], n[k], buf + at);
     fprintf(f, "\n");
-    fflush(f);
   }
 }
