@@ -5,6 +5,13 @@
 #include <stddef.h>
 #include <stdio.h>
 
+/** The name of snapshot k in the output folder (a printf format of k). */
+#define OUTDIR_SNAPSHOT_NAME "snap_%05d.h5"
+
+/** "dir/" followed by name_fmt formatted with the arguments (printf-style), in a string from
+ *  mem.h that the caller frees: a file path in the output folder, never cut short. */
+char *outdir_path(const char *dir, const char *name_fmt, ...) __attribute__((format(printf, 2, 3)));
+
 /** Create the folder path and its missing parents (mkdir -p). Returns 0, or -1 with errno set. */
 int outdir_create(const char *path);
 

@@ -11,6 +11,7 @@
 #include <unistd.h>
 #include "init.h"
 #include "mem.h"
+#include "outdir.h"
 
 #define OPEN_MIN 1u      /* the value must lie above min, not at it */
 #define OPEN_MAX 2u      /* ... below max */
@@ -258,13 +259,12 @@ static int check_series(const struct engine *e, long n_particles, char *why, siz
   return 0;
 }
 
-/* Rank 0: 0 unless OUTDIR/snap_N.h5, which the restart writes next (N the length of the series),
- * exists and was written at or before the checkpoint's step (or cannot be read to tell): then
- * the series lost snapshots that the restart would overwrite, and 1 with the reason. */
-static int overwrites_snapshot(const struct engine *e, char *why, size_t len) {
-  char path[1200], err[512];
+/* Whether the restart would overwrite path, the next snapshot of the series: 0 unless it exists
+ * and was written at or before the checkpoint's step (or cannot be read to tell); then 1 with
+ * the reason in why. */
+static int overwrite_reason(const char *path, const struct engine *e, char *why, size_t len) {
+  char err[512];
   struct snapshot_info info;
-  snprintf(path, sizeof path, "%s/snap_%05d.h5", e->outdir, e->n_snapshots);   /* engine_io.c */
   if (access(path, F_OK)) return 0;
   if (hdf5_read_header(path, &info, MPI_COMM_SELF, err, sizeof err)) {
     snprintf(why, len, "/run/snapshot_times: got %d rows, so the restart writes %s next, which "
@@ -279,6 +279,16 @@ static int overwrites_snapshot(const struct engine *e, char *why, size_t len) {
            "written at or before the checkpoint's step %ld, and the restart would overwrite it",
            e->n_snapshots, e->n_snapshots + 1, path, step, e->step);
   return 1;
+}
+
+/* Rank 0: 0 unless OUTDIR/snap_N.h5, which the restart writes next (N the length of the series),
+ * exists and was written at or before the checkpoint's step (or cannot be read to tell): then
+ * the series lost snapshots that the restart would overwrite, and 1 with the reason. */
+static int overwrites_snapshot(const struct engine *e, char *why, size_t len) {
+  char *path = outdir_path(e->outdir, OUTDIR_SNAPSHOT_NAME, e->n_snapshots);
+  int status = overwrite_reason(path, e, why, len);
+  free(path);
+  return status;
 }
 
 /* This rank's particles (global rows from first_row): 0, or 1 with the first rule a row

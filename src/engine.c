@@ -17,6 +17,7 @@
 #endif
 #include "signal_stop.h"
 #include "wall_guard.h"
+#include "mem.h"
 
 #define BALANCE_CHECK_EVERY 100 /* steps between load-balance checks (the timing window) */
 #define REPARTITION_MIN_GAP 500 /* steps between imbalance-triggered re-partitions */
@@ -50,7 +51,7 @@ static double cost_factor(const struct engine *e) {
  * summed onto rank 0 (plus 1 so that empty cells still count). */
 static int64_t *cell_weights(const struct engine *e) {
   long n = e->space.grid.n_cells;
-  int64_t *w = calloc(n, sizeof(int64_t));
+  int64_t *w = mem_calloc(n, sizeof(int64_t), "cell weights");
   double factor = cost_factor(e);
   for (long i = 0; i < e->p.n_owned; i++) w[e->p.cell[i]] += particle_work(e->p.phase[i]);
   for (long c = 0; c < n; c++) w[c] = (int64_t)llround((double)w[c] * factor);
@@ -76,7 +77,7 @@ static void resort(struct engine *e) {
 int engine_repartition(struct engine *e) {
   char err[512];
   int64_t *w = cell_weights(e);
-  int *owner = malloc(e->space.grid.n_cells * sizeof(int));
+  int *owner = mem_calloc(e->space.grid.n_cells, sizeof(int), "cell owners");
   int status = partition_cells(&e->space.grid, w, e->n_ranks, e->comm, owner, err, sizeof(err));
   free(w);
   if (status) {

@@ -9,6 +9,7 @@
 #include "engine_checkpoint.h"
 #include "io_hdf5.h"
 #include "mem.h"
+#include "outdir.h"
 
 #define MAX_NUMBERS 12
 
@@ -31,8 +32,7 @@ static int run_numbers(struct engine *e, struct run_extras *x, struct hdf5_numbe
 }
 
 int engine_checkpoint_write(struct engine *e) {
-  char path[1200], err[512];
-  snprintf(path, sizeof path, "%s/checkpoint.h5", e->outdir);
+  char *path = outdir_path(e->outdir, "checkpoint.h5"), err[512];
   struct run_extras x = {MPI_Wtime() - e->wall_start, e->no_free_surface, engine_finished(e), 0};
   MPI_Bcast(&x.wall_seconds, 1, MPI_DOUBLE, 0, e->comm);   /* attributes: one value for all */
   MPI_Allreduce(&e->wall_guard_hits, &x.wall_guard_hits, 1, MPI_LONG, MPI_SUM, e->comm);
@@ -45,6 +45,7 @@ int engine_checkpoint_write(struct engine *e) {
   e->t_output += MPI_Wtime() - t0;
   if (e->rank == 0 && status) fprintf(stderr, "mpsph: %s\n", err);
   if (e->rank == 0 && !status) printf("wrote %s (t = %.9g s, step %ld)\n", path, e->time, e->step);
+  free(path);
   return status ? 3 : 0;
 }
 

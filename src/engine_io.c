@@ -11,6 +11,7 @@
 #include "engine_checkpoint.h"
 #include "eos.h"
 #include "io_hdf5.h"
+#include "mem.h"
 #include "outdir.h"
 #include "passes.h"
 #include "probes.h"
@@ -21,11 +22,10 @@ static void put_text(FILE *f, const void *text) { fputs(text, f); }
 /* Drop the rows of the CSV file at path whose step (first column) is above last_step, and a
  * last row cut short by a failed or interrupted write (no newline), keeping the header, through
  * a temporary file. Returns 0 or -1. */
-static int trim_csv(const char *path, long last_step) {
-  char tmp[1300], *line = NULL;
+static int trim_csv(const char *dir, const char *name, long last_step) {
+  char *path = outdir_path(dir, "%s", name), *tmp = outdir_path(dir, "%s.tmp", name), *line = NULL;
   size_t cap = 0;
   ssize_t n;
-  snprintf(tmp, sizeof(tmp), "%s.tmp", path);
   FILE *in = fopen(path, "r"), *out = in ? fopen(tmp, "w") : NULL;
   int ok = out != NULL;
   for (long row = 0; ok && (n = getline(&line, &cap, in)) > 0; row++)
@@ -34,17 +34,20 @@ static int trim_csv(const char *path, long last_step) {
   free(line);
   if (in) fclose(in);
   if (out) ok &= fclose(out) == 0;
-  return ok ? rename(tmp, path) : -1;
+  ok = ok && rename(tmp, path) == 0;
+  free(path);
+  free(tmp);
+  return ok ? 0 : -1;
 }
 
 /* Open table t (t->name in the output folder) for rows. A fresh run truncates it; a restart
  * keeps the rows up to its step and appends. *fresh = 1 when the file is new (the caller writes
  * the header). Returns 0, or -1 with errno set. */
 static int open_csv(const struct engine *e, struct csv_table *t, int *fresh) {
-  char path[1200];
-  snprintf(path, sizeof(path), "%s/%s", e->outdir, t->name);
+  char *path = outdir_path(e->outdir, "%s", t->name);
   *fresh = !e->restarted || access(path, F_OK) != 0;
-  t->f = *fresh ? fopen(path, "w") : trim_csv(path, e->step) ? NULL : fopen(path, "a");
+  t->f = *fresh ? fopen(path, "w") : trim_csv(e->outdir, t->name, e->step) ? NULL : fopen(path, "a");
+  free(path);
   if (!t->f || fseek(t->f, 0, SEEK_END) != 0) return -1;
   t->complete = ftell(t->f);
   return 0;
@@ -120,13 +123,13 @@ int engine_open_output(struct engine *e) {
 /* Rank 0: close table t (if open); a table whose write failed is cut back to its complete
  * rows, so that no partial row stays to be glued to the next run's first. 0 or 3. */
 static int close_table(const struct engine *e, struct csv_table *t) {
-  char path[1200];
   if (!t->f) return 0;
   int status = end_row(e, t);
   if (fclose(t->f) != 0) status = table_failed(e, t, errno);
-  snprintf(path, sizeof path, "%s/%s", e->outdir, t->name);
+  char *path = outdir_path(e->outdir, "%s", t->name);
   if (t->error && truncate(path, t->complete) != 0)
     fprintf(stderr, "mpsph: cannot cut %s back to its complete rows: %s\n", path, strerror(errno));
+  free(path);
   t->f = NULL;
   return status;
 }
@@ -172,12 +175,12 @@ struct snapshot_info engine_snapshot_info(const struct engine *e, double time, l
 
 /* One snapshot file named `name` in the output folder at the given time and step. */
 static int write_named(struct engine *e, const char *name, double time, long step) {
-  char path[1200], err[512];
-  snprintf(path, sizeof(path), "%s/%s", e->outdir, name);
+  char *path = outdir_path(e->outdir, "%s", name), err[512];
   struct snapshot_info info = engine_snapshot_info(e, time, step);
   int status = hdf5_write_snapshot(path, &info, &e->p, e->comm, err, sizeof(err));
   if (status && e->rank == 0) fprintf(stderr, "mpsph: %s\n", err);
   if (!status && e->rank == 0) printf("wrote %s (t = %.9g s, step %ld)\n", path, time, step);
+  free(path);
   return status ? 3 : 0;
 }
 
@@ -190,19 +193,19 @@ int engine_write_failure(struct engine *e) {
 }
 
 static int write_snapshot(struct engine *e) {
-  char path[1200], err[512];
-  snprintf(path, sizeof(path), "%s/snap_%05d.h5", e->outdir, e->n_snapshots);
+  char *path = outdir_path(e->outdir, OUTDIR_SNAPSHOT_NAME, e->n_snapshots), err[512];
   struct snapshot_info info = engine_snapshot_info(e, e->time, e->step);
   double t0 = MPI_Wtime();
   int status = hdf5_write_snapshot(path, &info, &e->p, e->comm, err, sizeof(err));
+  free(path);
   long n_total, n = e->p.n_owned;
   MPI_Allreduce(&n, &n_total, 1, MPI_LONG, MPI_SUM, e->comm);
   if (status) {
     if (e->rank == 0) fprintf(stderr, "mpsph: %s\n", err);
     return 3;
   }
-  e->snap_times = realloc(e->snap_times, (e->n_snapshots + 1) * sizeof(double));
-  e->snap_counts = realloc(e->snap_counts, (e->n_snapshots + 1) * sizeof(long));
+  e->snap_times = mem_realloc(e->snap_times, (e->n_snapshots + 1) * sizeof(double), "snapshot series");
+  e->snap_counts = mem_realloc(e->snap_counts, (e->n_snapshots + 1) * sizeof(long), "snapshot series");
   e->snap_times[e->n_snapshots] = e->time;
   e->snap_counts[e->n_snapshots++] = n_total;
   if (e->rank == 0 && xdmf_write_series(e->outdir, e->n_snapshots, e->snap_times, e->snap_counts,

@@ -10,6 +10,7 @@
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <stdint.h>
 #include <string.h>
 #include <unistd.h>
 #include "io_mpiio.h"
@@ -197,8 +198,8 @@ static int transfer_call(hid_t dset, const struct field *f, const struct layout 
 static int transfer_field(hid_t dset, const struct field *f, const struct layout *L, hid_t dxpl,
                           int reading, MPI_Comm comm, char *err, size_t len) {
   hsize_t rows = L->n < L->per_call ? L->n : L->per_call;
-  double *buf = malloc((rows ? rows : 1) * (size_t)f->ncomp * sizeof(double));
-  int st = agree(!buf ? fail(err, len, "out of memory for %s", f->name) : 0, comm, err, len);
+  double *buf = mem_calloc(rows ? rows : 1, (size_t)f->ncomp * sizeof(double), "HDF5 transfer buffer");
+  int st = 0;
   for (long c = 0; c < (st ? 0 : L->calls); c++)
     st |= transfer_call(dset, f, L, c, dxpl, buf, reading, err, len);
   if (H5Dclose(dset) < 0 && !st) st = fail(err, len, "cannot close %s", f->name);
@@ -318,13 +319,13 @@ static int put_string_attr(hid_t loc, const char *name, const char *value, char 
   return st;
 }
 
-/* Read a string attribute into a malloc'ed copy (*out, NULL on failure); 0 or 3. */
+/* Read a string attribute into a copy from mem.h (*out, NULL on failure); 0 or 3. */
 static int get_string_attr(hid_t loc, const char *name, const char **out, char *err, size_t len) {
   char *text = NULL;
   hid_t type = string_type();
   int st = type < 0 ? fail(err, len, "cannot make string type for %s", name)
                     : get_attr(loc, name, type, &text, err, len);
-  *out = !st && text ? strdup(text) : NULL;
+  *out = !st && text ? mem_strndup(text, SIZE_MAX, "HDF5 string attribute") : NULL;
   if (!st && !*out) st = fail(err, len, "attribute %s is empty", name);
   if (text) H5free_memory(text);
   if (type >= 0) H5Tclose(type);
@@ -535,19 +536,18 @@ static int room_for(const char *path, double bytes, MPI_Comm comm, char *err, si
 static int write_via_tmp(const char *path, const struct snapshot_info *info,
                          const struct parts *p, const struct checkpoint_extra *extra,
                          MPI_Comm comm, char *err, size_t len) {
-  size_t n = strlen(path) + sizeof ".tmp";
-  char *tmp = malloc(n);
+  char *tmp = NULL;
   int st;
   if (err && len) err[0] = '\0';
-  if (!tmp) st = fail(err, len, "out of memory for %s", path);
-  else if (p->dim < 1 || p->dim > 3 || p->dim != info->dimension)
+  if (p->dim < 1 || p->dim > 3 || p->dim != info->dimension)
     st = fail(err, len, "%s: particles have dimension %d, header %d", path, p->dim,
               info->dimension);
   else st = 0;
   st = agree(st, comm, err, len);
   if (!st) st = room_for(path, file_bytes(info, p, extra, comm), comm, err, len);
   if (!st) {
-    snprintf(tmp, n, "%s.tmp", path);
+    tmp = mem_alloc(strlen(path) + sizeof ".tmp", "a file path");
+    sprintf(tmp, "%s.tmp", path);
     mpiio_watch_begin(path, comm);
     st = write_file(tmp, info, p, extra, comm, err, len);
     mpiio_watch_end();

@@ -11,10 +11,12 @@
  * rank makes the same calls up to and through H5Fclose; then the ranks agree on the recorded
  * failures (io_hdf5.c) and the file is discarded. */
 #include "io_mpiio.h"
+#include "mem.h"
 
 #include <errno.h>
 #include <libgen.h>
 #include <mpi.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -24,7 +26,7 @@
 static struct {
   int on;              /* between mpiio_watch_begin and mpiio_watch_end */
   int inject;          /* the test hook MPSPH_TEST_NO_SPACE applies to this file on this rank */
-  char path[1200];
+  char *path;          /* the final file's path (from mem.h) */
   MPI_Comm comm;       /* the ranks that write the file */
   int failed;          /* a watched call failed */
   int sys_errno;       /* the system's reason of the first failure that gave one, or 0 */
@@ -126,7 +128,7 @@ static int hook_applies(const char *path) {
 
 void mpiio_watch_begin(const char *path, MPI_Comm comm) {
   memset(&watch, 0, sizeof watch);
-  snprintf(watch.path, sizeof watch.path, "%s", path);
+  watch.path = mem_strndup(path, SIZE_MAX, "the path of the file being written");
   watch.comm = comm;
   watch.inject = hook_applies(path);
   watch.on = 1;
@@ -136,11 +138,11 @@ void mpiio_watch_begin(const char *path, MPI_Comm comm) {
  * either on a file system with no space left is ENOSPC. */
 static void failure_reason(char *reason, int len) {
   struct statvfs fs;
-  char dir[sizeof watch.path];
-  snprintf(dir, sizeof dir, "%s", watch.path);
+  char *dir = mem_strndup(watch.path, SIZE_MAX, "the path of the file being written");
   int e = watch.sys_errno;
   if (!e && watch.mpi_code == MPI_SUCCESS && statvfs(dirname(dir), &fs) == 0 && fs.f_bavail == 0)
     e = ENOSPC;
+  free(dir);
   if (e) snprintf(reason, (size_t)len, "%s", strerror(e));
   else if (watch.mpi_code != MPI_SUCCESS) MPI_Error_string(watch.mpi_code, reason, &len);
   else snprintf(reason, (size_t)len, "fewer bytes written than asked");
@@ -154,4 +156,8 @@ int mpiio_watch_failed(char *err, size_t len) {
   return 3;
 }
 
-void mpiio_watch_end(void) { watch.on = 0; }
+void mpiio_watch_end(void) {
+  watch.on = 0;
+  free(watch.path);
+  watch.path = NULL;
+}

@@ -1,6 +1,7 @@
 /* io_xdmf.c — snapshots.xdmf: an XDMF 3 temporal collection of the snap_NNNNN.h5 files, for
  * ParaView and VisIt. Paths inside are relative to the output folder, so the folder can move. */
 #include "io_hdf5.h"
+#include "outdir.h"
 
 #include <errno.h>
 #include <stdio.h>
@@ -39,7 +40,7 @@ static void attribute(FILE *f, const char *snap, const char *name, const char *k
  * cells, so there the particles show with the "Point Gaussian" representation. */
 static void grid(FILE *f, int index, double time, long n, int dim) {
   char snap[32], dims[48], count[32];
-  snprintf(snap, sizeof snap, "snap_%05d.h5", index);
+  snprintf(snap, sizeof snap, OUTDIR_SNAPSHOT_NAME, index);
   snprintf(dims, sizeof dims, "%ld %d", n, dim);
   snprintf(count, sizeof count, "%ld", n);
   fprintf(f, "      <Grid Name=\"snap_%05d\" GridType=\"Uniform\">\n", index);
@@ -81,16 +82,10 @@ static int write_text(const char *path, int n, const double *times, const long *
 /* Rank 0: write dir/snapshots.xdmf (via a .tmp and rename) for snapshots 0..n-1; 0 or 3. */
 int xdmf_write_series(const char *dir, int n_snapshots, const double *times,
                       const long *n_particles, int dimension, char *err, size_t err_len) {
-  size_t len = strlen(dir) + sizeof "/snapshots.xdmf.tmp";
-  char *tmp = malloc(len), *path = malloc(len);
-  int e = ENOMEM;
-  if (tmp && path) {
-    snprintf(tmp, len, "%s/snapshots.xdmf.tmp", dir);
-    snprintf(path, len, "%s/snapshots.xdmf", dir);
-    e = write_text(tmp, n_snapshots, times, n_particles, dimension);
-    if (!e && rename(tmp, path) != 0) e = errno;
-    if (e) unlink(tmp);
-  }
+  char *tmp = outdir_path(dir, "snapshots.xdmf.tmp"), *path = outdir_path(dir, "snapshots.xdmf");
+  int e = write_text(tmp, n_snapshots, times, n_particles, dimension);
+  if (!e && rename(tmp, path) != 0) e = errno;
+  if (e) unlink(tmp);
   if (e && err && err_len)
     snprintf(err, err_len, "cannot write %s/snapshots.xdmf: %s", dir, strerror(e));
   free(tmp);

@@ -1,12 +1,16 @@
 /* outdir.c — the output folder: mkdir -p, a write probe that leaves nothing behind, and the
  * lock that keeps a second run out of it. */
 #include "outdir.h"
+#include "mem.h"
 
 #include <errno.h>
+#include <stdarg.h>
 #include <fcntl.h>
 #include <libgen.h>
 #include <limits.h>
+#include <stdint.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
 #include <sys/statvfs.h>
@@ -48,6 +52,20 @@ static void remove_dirs(const char *path, size_t created) {
   }
 }
 
+char *outdir_path(const char *dir, const char *name_fmt, ...) {
+  va_list args;
+  va_start(args, name_fmt);
+  int name_len = vsnprintf(NULL, 0, name_fmt, args);
+  va_end(args);
+  size_t dir_len = strlen(dir), bytes = dir_len + 1 + (size_t)(name_len > 0 ? name_len : 0) + 1;
+  char *path = mem_alloc(bytes, "a file path in the output folder");
+  snprintf(path, bytes, "%s/", dir);
+  va_start(args, name_fmt);
+  vsnprintf(path + dir_len + 1, bytes - dir_len - 1, name_fmt, args);
+  va_end(args);
+  return path;
+}
+
 int outdir_create(const char *path) {
   size_t created;
   return make_dirs(path, &created);
@@ -81,19 +99,21 @@ int outdir_probe(const char *path, char *err, size_t err_len) {
 
 int outdir_write_file(const char *dir, const char *name, void (*fill)(FILE *f, const void *ctx),
                       const void *ctx) {
-  char path[PATH_MAX], tmp[PATH_MAX + 8];
-  snprintf(path, sizeof(path), "%s/%s", dir, name);
-  snprintf(tmp, sizeof(tmp), "%s.tmp", path);
+  char *path = outdir_path(dir, "%s", name), *tmp = outdir_path(dir, "%s.tmp", name);
   FILE *f = fopen(tmp, "w");
-  if (!f) return -1;
-  fill(f, ctx);
-  int ok = !ferror(f);
-  ok &= fclose(f) == 0;
-  if (ok && rename(tmp, path) == 0) return 0;
+  int ok = f != NULL;
+  if (f) {
+    fill(f, ctx);
+    ok = !ferror(f);
+    ok &= fclose(f) == 0;
+    ok = ok && rename(tmp, path) == 0;
+  }
   int saved = errno;
-  unlink(tmp);
+  if (f && !ok) unlink(tmp);
+  free(path);
+  free(tmp);
   errno = saved;
-  return -1;
+  return ok ? 0 : -1;
 }
 
 /* Who holds the lock: "pid P on host H since T", written into the lock file by its holder. */
@@ -118,11 +138,10 @@ static void read_holder(int fd, char *text, size_t len) {
 }
 
 int outdir_lock(const char *path, int *fd, char *err, size_t err_len) {
-  char file[PATH_MAX], holder[512];
+  char *file = outdir_path(path, LOCK_FILE), holder[512];
   struct flock lock = {.l_type = F_WRLCK, .l_whence = SEEK_SET, .l_start = 0, .l_len = 0};
-  *fd = -1;
-  if (snprintf(file, sizeof file, "%s/" LOCK_FILE, path) >= (int)sizeof file) errno = ENAMETOOLONG;
-  else if (outdir_create(path) == 0) *fd = open(file, O_RDWR | O_CREAT | O_CLOEXEC, 0666);
+  *fd = outdir_create(path) == 0 ? open(file, O_RDWR | O_CREAT | O_CLOEXEC, 0666) : -1;
+  free(file);
   if (*fd < 0) {
     snprintf(err, err_len, "cannot write to the output folder '%s': %s", path, strerror(errno));
     return 1;
@@ -146,10 +165,11 @@ int outdir_lock(const char *path, int *fd, char *err, size_t err_len) {
 }
 
 int outdir_room(const char *file, double bytes, char *err, size_t err_len) {
-  char dir[PATH_MAX];
+  char *dir = mem_strndup(file, SIZE_MAX, "a file path");
   struct statvfs fs;
-  snprintf(dir, sizeof dir, "%s", file);
-  if (statvfs(dirname(dir), &fs) != 0) return 0;   /* not known: the write will tell */
+  int known = statvfs(dirname(dir), &fs) == 0;
+  free(dir);
+  if (!known) return 0;   /* not known: the write will tell */
   double room = (double)fs.f_frsize * (double)(geteuid() == 0 ? fs.f_bfree : fs.f_bavail);
   if (room >= bytes) return 0;
   snprintf(err, err_len, "cannot write %s: %s (it needs about %.3g MB, %.3g MB are free)",

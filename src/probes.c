@@ -9,6 +9,7 @@
 #include "case_load.h"
 #include "passes.h"
 #include "probes.h"
+#include "mem.h"
 
 #define SENSOR_SPACING 0.25   /* sample spacing on a sensor face / dx */
 #define GAUGE_SPACING 0.125   /* sample spacing along a wave gauge's line / dx */
@@ -221,8 +222,7 @@ void probes_write_row(struct engine *e, FILE *f) {
   for (int k = 0; k < c->n_probes; k++) total += n[k] = n_samples(e, &c->probes[k]);
   if (total > e->probe_buf_len) {   /* the sample count is fixed by the case: sized once */
     free(e->probe_buf);
-    e->probe_buf = malloc((size_t)total * sizeof(double));
-    if (!e->probe_buf) abort();
+    e->probe_buf = mem_calloc(total, sizeof(double), "probe samples");
     e->probe_buf_len = total;
   }
   double *buf = e->probe_buf;
