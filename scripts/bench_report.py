@@ -152,7 +152,7 @@ class Report:
                "peak of one core, not the AVX2 FMA peak an `ARCH=native` build could reach."
                % " and ".join("%.3g" % (p / 1e9) for p in self.peaks), "",
                "Flops of the main pass (`%s`): counted by hand from the source of `fluid_sums` in "
-               "src/pass_fluid_rhs.c (perf's hardware counters are not available on this virtual "
+               "src/physics/pass_fluid_rhs.c (perf's hardware counters are not available on this virtual "
                "machine: `perf stat -e instructions true` reports `<not supported>`): %d flops per "
                "pair for the single-phase scene and %d for the two-phase scene (same-phase fluid pair "
                "in 2D; the derivation is in scripts/bench.py, FLOPS_PER_PAIR). Wall and other-phase "

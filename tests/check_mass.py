@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Mass conservation of a run, per phase. No scheme creates, deletes or re-weighs a fluid particle
-(the solver sets m only at the start, src/init.c, and for wall ghosts; delta-sph integrates
+(the solver sets m only at the start, src/case/init.c, and for wall ghosts; delta-sph integrates
 V = m/rho and riemann re-initialises rho, never m: doc/theory.md sections 9, 10), so every
 snapshot, against the first one, must hold
   - per fluid phase: the same number of particles and the same total mass, to round-off

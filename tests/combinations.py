@@ -7,7 +7,7 @@ detection, surface tension, shifting, the interface options (interface_pressure,
 interface_viscosity, interface_mode, interface_sharpness), the scheme-specific model switches
 (spc_model, dissipation_form), the number of ranks and re-partitioning every step. Every run
 also evaluates every kind of probe and writes stats and probes rows at every step. The word
-levels are read from the loader's tables in src/case_load.c, so a new scheme, kernel or option
+levels are read from the loader's tables in src/case/case_load.c, so a new scheme, kernel or option
 word enters the design by itself.
 
 Every pair of levels that some accepted combination holds is held by an accepted combination
@@ -42,7 +42,7 @@ def loader_words(source, table):
     """The words of the NULL-terminated string table `table` in the loader's source."""
     m = re.search(r"\b%s\[\]\s*=\s*\{(.*?)NULL\s*\}" % table, source, re.S)
     if not m:
-        sys.exit("combinations.py: table %s not found in src/case_load.c" % table)
+        sys.exit("combinations.py: table %s not found in src/case/case_load.c" % table)
     return re.findall(r'"([^"]*)"', m.group(1))
 
 
@@ -50,13 +50,13 @@ def loader_range(source, rule):
     """The integers lo..hi of the loader's integer rule `rule` ({"...", lo, open, hi, 1})."""
     m = re.search(r"\b%s\s*=\s*\{\"[^\"]*\",\s*(\d+),\s*0,\s*(\d+),\s*1\}" % rule, source)
     if not m:
-        sys.exit("combinations.py: rule %s not found in src/case_load.c" % rule)
+        sys.exit("combinations.py: rule %s not found in src/case/case_load.c" % rule)
     return [str(k) for k in range(int(m.group(1)), int(m.group(2)) + 1)]
 
 
 def factors():
-    """The factors and their levels, words read from src/case_load.c."""
-    with open(os.path.join(ROOT, "src", "case_load.c")) as f:
+    """The factors and their levels, words read from src/case/case_load.c."""
+    with open(os.path.join(ROOT, "src", "case", "case_load.c")) as f:
         src = f.read()
     return [
         ("scheme", loader_words(src, "SCHEME_NAMES")),

@@ -9,8 +9,8 @@
 #include <stdint.h>
 #include <stdlib.h>
 #include <unistd.h>
-#include "case_load.h"
-#include "engine.h"
+#include "case/case_load.h"
+#include "engine/engine.h"
 
 /** Rank 0 creates the folder from the mkdtemp template dir (len bytes) and every rank receives
  *  its name. Returns 0, or 1 if it could not be made. Collective. */

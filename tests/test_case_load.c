@@ -5,9 +5,9 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "case_load.h"
-#include "init.h"
-#include "parts.h"
+#include "case/case_load.h"
+#include "case/init.h"
+#include "base/parts.h"
 #include "check.h"
 
 #define ERR_LEN 1024

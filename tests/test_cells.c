@@ -4,7 +4,7 @@
  * the stencil's order (global cell order, then slot order). */
 #include <stdlib.h>
 #include "check.h"
-#include "passes.h"
+#include "physics/passes.h"
 
 /* Random particles in [0, 1]^dim, ids shuffled. */
 static void random_parts(struct parts *p, int dim, long n, unsigned seed) {

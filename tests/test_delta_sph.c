@@ -14,11 +14,11 @@
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
-#include "case_load.h"
+#include "case/case_load.h"
 #include "check.h"
 #include "engine_test.h"
-#include "engine.h"
-#include "eos.h"
+#include "engine/engine.h"
+#include "physics/eos.h"
 
 static const char *case_text =
     "name: delta-sph-test\n"

@@ -20,11 +20,11 @@
  * Usage: test_generalized_dissipation */
 #include <math.h>
 #include <stdio.h>
-#include "case_load.h"
+#include "case/case_load.h"
 #include "check.h"
 #include "engine_test.h"
-#include "engine.h"
-#include "eos.h"
+#include "engine/engine.h"
+#include "physics/eos.h"
 
 static const char *case_text =
     "name: gd-test\n"

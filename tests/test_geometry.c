@@ -3,7 +3,7 @@
  * the same rectangle as a polygon must agree; polygon faults (crossing, touching, degenerate). */
 #include <math.h>
 #include "check.h"
-#include "geometry.h"
+#include "case/geometry.h"
 
 static struct shape box2(double x0, double y0, double x1, double y1) {
   struct shape s = {.kind = SHAPE_BOX, .min = {x0, y0, 0}, .max = {x1, y1, 0}};

@@ -3,7 +3,7 @@
  * contributions they give (notes §1.5): same fluid [(rho_j - rho_i) du_j + 2 rho_i du_i],
  * other fluid 2 rho_i du_i, wall rho_i du_i (each dotted with gradW V_j). */
 #include "check.h"
-#include "interface.h"
+#include "physics/interface.h"
 
 /* Expected (eps_ii, eps_ij, phi_ii, phi_ij, kappa) per mode and relation (same, other, wall). */
 static const double expected[5][3][5] = {

@@ -21,10 +21,10 @@
  * Usage: test_interface_pressure [TMPDIR] */
 #include <math.h>
 #include <stdio.h>
-#include "case_load.h"
+#include "case/case_load.h"
 #include "check.h"
 #include "engine_test.h"
-#include "engine.h"
+#include "engine/engine.h"
 
 #define G 9.81
 

@@ -13,10 +13,10 @@
  * Usage: test_interface_viscosity [TMPDIR] */
 #include <math.h>
 #include <stdio.h>
-#include "case_load.h"
+#include "case/case_load.h"
 #include "check.h"
 #include "engine_test.h"
-#include "engine.h"
+#include "engine/engine.h"
 
 #define TAU 1.0   /* shear stress of the Couette flow [Pa] */
 

@@ -4,7 +4,7 @@
  * Usage: mpirun -n 1|2|3 test_io_hdf5 [KEEPDIR]   (with KEEPDIR the output folders are kept:
  * KEEPDIR (2D, two snapshots), KEEPDIR/3d and KEEPDIR/empty, each with snapshots.xdmf). */
 #include "check.h"
-#include "io_hdf5.h"
+#include "io/io_hdf5.h"
 
 #include <hdf5.h>
 #include <mpi.h>

@@ -2,7 +2,7 @@
  * sum W V = 1, sum grad W V = 0, sum r_ji (x) grad_i W V = I, and the SPH gradient of a linear
  * field equals its slope; plus F = W'/r against a finite difference of W. */
 #include "check.h"
-#include "kernel.h"
+#include "physics/kernel.h"
 
 /* Moments at a particle at `offset` (in units of dx) inside a lattice of spacing dx. */
 static void lattice_moments(const struct kernel *k, double dx, const double *offset, double *sum_w,

@@ -8,7 +8,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 #include "check.h"
-#include "mem.h"
+#include "base/mem.h"
 
 enum failure { HUGE_ALLOC, HUGE_CALLOC, OVERFLOW_BYTES, HUGE_REALLOC, LIBRARY };
 

@@ -7,7 +7,7 @@
 #include <mpi.h>
 #include <stdint.h>
 #include <stdio.h>
-#include "mem.h"
+#include "base/mem.h"
 
 int main(int argc, char **argv) {
   MPI_Init(&argc, &argv);

@@ -3,7 +3,7 @@
 #include <math.h>
 #include <string.h>
 #include "check.h"
-#include "motion.h"
+#include "case/motion.h"
 
 /* Position of body point x_ref at time t. */
 static void position_at(const struct wall_motion *m, double t, const double *x_ref, double *x) {

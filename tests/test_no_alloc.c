@@ -9,10 +9,10 @@
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
-#include "case_load.h"
+#include "case/case_load.h"
 #include "check.h"
 #include "engine_test.h"
-#include "engine.h"
+#include "engine/engine.h"
 
 #define STEPS 12
 

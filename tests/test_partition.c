@@ -3,7 +3,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "check.h"
-#include "partition.h"
+#include "parallel/partition.h"
 
 static void check_parts(const struct grid *g, int n_parts, unsigned seed) {
   int64_t *w = malloc(g->n_cells * sizeof(int64_t));

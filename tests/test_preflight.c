@@ -7,12 +7,12 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "case_load.h"
+#include "case/case_load.h"
 #include "check.h"
-#include "init.h"
-#include "kernel.h"
-#include "mem_estimate.h"
-#include "outdir.h"
+#include "case/init.h"
+#include "physics/kernel.h"
+#include "app/mem_estimate.h"
+#include "io/outdir.h"
 
 static const char *const CASES[] = {
     "cases/dambreak-1phase/case.yaml", "cases/dambreak-2phase/case.yaml",

@@ -3,7 +3,7 @@
  * both give a constant field; MLS falls back to Shepard when the neighbours are collinear. */
 #include <math.h>
 #include "check.h"
-#include "probes.h"
+#include "io/probes.h"
 
 /* A Gaussian weight of offset r (units of h). */
 static double weight(const double *r) { return exp(-(r[0] * r[0] + r[1] * r[1])); }

@@ -29,13 +29,13 @@
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
-#include "case_load.h"
+#include "case/case_load.h"
 #include "check.h"
 #include "engine_test.h"
-#include "engine.h"
-#include "eos.h"
-#include "passes.h"
-#include "riemann.h"
+#include "engine/engine.h"
+#include "physics/eos.h"
+#include "physics/passes.h"
+#include "physics/riemann.h"
 
 /* The scheme, kernel, resolution, time and domain of the cases in the unit box at dx = 0.02, and
  * the keys that end every case here. */

@@ -30,12 +30,12 @@
 #include <stdio.h>
 #include <string.h>
 #include <sys/stat.h>
-#include "case_load.h"
+#include "case/case_load.h"
 #include "check.h"
 #include "engine_test.h"
-#include "engine.h"
-#include "eos.h"
-#include "passes.h"
+#include "engine/engine.h"
+#include "physics/eos.h"
+#include "physics/passes.h"
 
 static const char *case_text =
     "name: same-phase-test\n"

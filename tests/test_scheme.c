@@ -29,11 +29,11 @@
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
-#include "case_load.h"
+#include "case/case_load.h"
 #include "check.h"
 #include "engine_test.h"
-#include "engine.h"
-#include "eos.h"
+#include "engine/engine.h"
+#include "physics/eos.h"
 
 static const char *case_text =
     "name: scheme-test\n"

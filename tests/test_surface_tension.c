@@ -18,10 +18,10 @@
  * Usage: test_surface_tension */
 #include <math.h>
 #include <stdlib.h>
-#include "case_load.h"
+#include "case/case_load.h"
 #include "check.h"
 #include "engine_test.h"
-#include "engine.h"
+#include "engine/engine.h"
 
 #define R_DROP 0.5
 #define SIGMA 0.07

@@ -13,10 +13,10 @@
  * side-wall ghosts of the top water rows, whose mirror-point support holds water below them only. */
 #include <math.h>
 #include <stdio.h>
-#include "case_load.h"
+#include "case/case_load.h"
 #include "check.h"
 #include "engine_test.h"
-#include "engine.h"
+#include "engine/engine.h"
 
 #define G 9.81
 #define RHO_W 1000.0

@@ -1,4 +1,4 @@
-/* test_wall_guard.c — the wall guard (src/wall_guard.c) on single particles placed by hand in a
+/* test_wall_guard.c — the wall guard (src/engine/wall_guard.c) on single particles placed by hand in a
  * tank [0, 1] x [0, 1] with dx = 0.05 and physics.wall_guard = 0.25 (a guard distance of
  * 0.0125 m):
  *  1. fixed tank, after a step (wall_guard_apply): a particle 0.2 dx above the floor moving down
@@ -14,13 +14,13 @@
  * Usage: test_wall_guard [TMPDIR] */
 #include <math.h>
 #include <stdio.h>
-#include "case_load.h"
+#include "case/case_load.h"
 #include "check.h"
 #include "engine_test.h"
-#include "engine.h"
-#include "motion.h"
-#include "passes.h"
-#include "wall_guard.h"
+#include "engine/engine.h"
+#include "case/motion.h"
+#include "physics/passes.h"
+#include "engine/wall_guard.h"
 
 #define TOL 1e-14
 

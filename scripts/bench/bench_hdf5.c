@@ -11,7 +11,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
-#include "io_hdf5.h"
+#include "io/io_hdf5.h"
 
 /* Bytes of one particle in the 2D snapshot: x, v (2 each), rho, p, m as double, phase int32, id int64. */
 #define SNAP_BYTES_2D (7 * 8 + 4 + 8)

@@ -8,9 +8,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "case_load.h"
-#include "init.h"
-#include "kernel.h"
+#include "case/case_load.h"
+#include "case/init.h"
+#include "physics/kernel.h"
 
 #define MAX_SETS 4
 #define MAX_VISITS 20000.0   /* count the particles only of cases this small (fast) */

@@ -1,0 +1,297 @@
+/* engine.h — the solver state of one rank and the time loop. */
+#ifndef MPSPH_ENGINE_H
+#define MPSPH_ENGINE_H
+
+#include <mpi.h>
+#include <stdio.h>
+#include "case/case.h"
+#include "physics/interface.h"
+#include "io/io_hdf5.h"
+#include "physics/kernel.h"
+#include "parallel/nlist.h"
+#include "base/parts.h"
+#include "parallel/proxy.h"
+#include "parallel/space.h"
+
+/* The longest pipeline engine_assemble builds: 1 halo + 4 Shepard (delta-sph) + 2 wall ghosts + 3
+ * free surface + 3 gradients/halo/rhs + 3 surface tension + 1 wall guard = 17; the dual stepper's
+ * table is shorter (a static assertion in engine_step_dual.c). */
+#define ENGINE_MAX_OPS 17
+#define ENGINE_CELL_SKIN 1.15   /* cell edge / kernel support: room for motion within a step; the
+                                   neighbour lists use the same radius */
+
+struct engine;
+
+/** A CSV table of the output folder (stats.csv, probes.csv), appended row by row by rank 0. */
+struct csv_table {
+  FILE *f;                 /* NULL on the other ranks */
+  const char *name;        /* file name in the output folder */
+  long complete;           /* bytes of its complete rows: a failed row is cut back to here */
+  int error;               /* errno of the first failed write, 0 while none */
+};
+
+/** One operation of the per-stage pipeline: a pass over particles/pairs, or a halo update. */
+struct stage_op {
+  const char *name;
+  void (*pass)(struct engine *e);   /* NULL for a halo update */
+  int halo_fields;                  /* for halo updates: a mask of HF_* fields */
+  int once_per_step;                /* run at the first stage only */
+  double seconds;                   /* accumulated wall time */
+  long pairs;                       /* accumulated neighbour-pair evaluations */
+};
+
+/** Halo field sets (bit mask). */
+enum { HF_POS = 1, HF_VEL = 2, HF_RHO = 4, HF_P = 8, HF_MASS = 16, HF_GRAD_RHO = 32, HF_SHIFT = 64,
+       HF_DIV = 128, HF_SURFACE = 256, HF_INTERFACE_NORMAL = 512, HF_RHO_SHEPARD = 1024,
+       HF_P_SHEPARD = 2048,
+       HF_GD = 4096 /* scheme generalized-dissipation: Shepard sum Gamma and <grad p>^L */ };
+
+/** Terms and passes a scene needs, decided once at start-up from the case. */
+enum {
+  FEAT_WALLS = 1,          /* wall ghost interpolation */
+  FEAT_SHIFT = 2,          /* particle shifting velocity du (advection with u + du) */
+  FEAT_DELTA_U = 4,        /* the delta-u terms of continuity and momentum (consistent shifting) */
+  FEAT_DAMPER = 8,         /* acoustic damper on the liquid phases */
+  FEAT_SURFACE = 16,       /* free-surface detection (region, normals) */
+  FEAT_TIC = 32,           /* tensile instability control */
+  FEAT_SHARPNESS = 64,     /* interface sharpness force */
+  FEAT_CENTRAL = 128,      /* quadratic potential body force */
+  FEAT_SURFACE_TENSION = 256,  /* CSF surface tension between the fluid phases */
+  FEAT_SHEPARD = 512,      /* scheme delta-sph: same-phase Shepard density and the pressure from it */
+  FEAT_SAME_PHASE_CONTINUITY = 1024,  /* scheme same-phase-continuity (paper 003): its own rhs pass,
+                                         Shepard pressure of other-phase neighbours, midpoint
+                                         predictor-corrector, density threshold */
+  FEAT_GENERALIZED_DISSIPATION = 2048,  /* scheme generalized-dissipation (paper 004) */
+  FEAT_RIEMANN = 4096,     /* scheme riemann: Riemann pair terms, density re-initialisation, dual time stepping */
+  FEAT_TRANSPORT_VELOCITY = 8192,  /* scheme riemann with a light phase: its transport-velocity shift */
+  FEAT_DIFFUSION = 16384,  /* density diffusion (delta > 0); in delta-plus and delta-sph also the
+                              renormalised density gradient it reads */
+  FEAT_VISCOSITY = 32768   /* artificial (alpha > 0) or laminar (a phase's viscosity > 0) viscosity */
+};
+
+/** Work arrays of the scheme, sized to the particle capacity (those read at halo slots) or to
+ *  the owned particles (the RK4 state and sums, the derivatives, the free-surface region and
+ *  normals); optional ones stay NULL when the scene does not need them. */
+struct work {
+  long capacity, owned_capacity;
+  double *vol;                     /* particle volume m/rho of every slot, this stage [m^dim] */
+  double *grad_rho[3];             /* renormalised density gradient [kg/m^4] */
+  double *div;                     /* velocity divergence <div u> over all neighbours [1/s] */
+  double *drho, *dv[3];            /* right-hand sides of the current stage */
+  double *x0[3], *v0[3], *rho0;    /* state at the start of the step */
+  double *sum_x[3], *sum_v[3], *sum_rho;   /* RK4 weighted sums of the stage derivatives */
+  double *du[3];                   /* FEAT_SHIFT: shifting velocity [m/s] */
+  double *surface;                 /* FEAT_SURFACE: 1 for detected free-surface particles */
+  double *region;                  /* FEAT_SURFACE: 1 in the free-surface region (band) */
+  double *normal[3];               /* FEAT_SURFACE: outward unit normal */
+  double *lambda;                  /* FEAT_SURFACE: smallest eigenvalue of the B matrix */
+  double *rho_s;                   /* FEAT_SHEPARD: same-phase Shepard density [kg/m^3] */
+  double *interface_normal[3];     /* FEAT_SURFACE_TENSION: unit normal of the colour gradient,
+                                      toward the other phase; 0 off the interface band */
+  double *colour_grad;             /* FEAT_SURFACE_TENSION: |grad chi| on the band, else 0 [1/m] */
+  double *kappa_curvature;         /* FEAT_SURFACE_TENSION: div n, 0 off the band [1/m] */
+  double *p_shepard;               /* FEAT_SAME_PHASE_CONTINUITY: Shepard pressure over the fluid of
+                                      every phase, the particle included [Pa] */
+  double *gd_gamma;                /* FEAT_GENERALIZED_DISSIPATION: Shepard sum incl. self, 1 on
+                                      wall ghosts [-] */
+  double *gd_grad_p[3];            /* FEAT_GENERALIZED_DISSIPATION: renormalised <grad p>^L [Pa/m] */
+};
+
+struct engine {
+  const struct case_def *c;
+  MPI_Comm comm;
+  int rank, n_ranks;
+  struct kernel kern;
+  struct space space;
+  struct halo halo;
+  struct parts p;
+  struct work w;
+  struct nlist nl;                 /* neighbour lists of the owned fluid, rebuilt every step */
+  double h, vol0;                  /* smoothing length [m], dx^dim [m^dim] */
+  double c_max;                    /* largest phase sound speed [m/s] */
+  unsigned features;               /* FEAT_* of the assembled pipeline */
+  int stage;                       /* current RK stage 0..3 */
+  double rho_min[CASE_MAX_PHASES]; /* global minimum density per phase (first stage) [kg/m^3] */
+  struct interface_weights iface[3];   /* eps/phi/kappa per pair relation (case interface mode) */
+  double damper_coef[CASE_MAX_PHASES + 1];  /* alpha2 c0 h of phase k at [k + 1]; 0 for gases, walls [m^2/s] */
+  double time, dt;                 /* [s] */
+  double stage_time;               /* time of the state the current stage evaluates [s] */
+  int moving_walls;                /* the case has walls with a prescribed motion */
+  struct frame frames[CASE_MAX_WALLS];   /* the moving walls' frames at stage_time */
+  long step;
+  double step_start_time;          /* time and step at the start of the current step */
+  long step_start;
+  int n_ops;
+  struct stage_op ops[ENGINE_MAX_OPS];
+  long pass_pairs;                 /* pair evaluations of the running pass */
+  long n_surface;                  /* owned particles detected on the free surface (last detection) */
+  int no_free_surface;             /* free_surface auto found none at t = 0 */
+  long renorm_fallbacks;           /* particles whose renormalisation matrix was singular */
+  int renorm_reported;
+  /* load balance */
+  long n_repartitions, last_repartition_step;
+  double t_compute;                /* this rank's pass time since the last balance check [s] */
+  double t_migrate, t_output;      /* accumulated [s] */
+  double t_dropped_ops;            /* time of operations dropped from the pipeline by a re-assembly [s] */
+  double t_steps;                  /* wall time of the step loop without the final output [s] */
+  double t_steps_cpu;              /* CPU time of this process in the same loop [s] */
+  /* output */
+  const char *outdir;
+  char *case_yaml;
+  int n_snapshots;
+  double *snap_times;
+  long *snap_counts;
+  double next_output, next_stats, next_probes, next_checkpoint, wall_start, next_progress;
+  long last_snapshot_step, last_stats_step, last_probes_step;   /* -1 before the first */
+  struct csv_table stats, probes;
+  int lock_fd;                     /* rank 0: the output folder's lock (outdir_lock), else -1 */
+  double *probe_buf;               /* the probes' samples of one row, sized at the first row */
+  long probe_buf_len;
+  int restarted;                   /* continues from a checkpoint */
+  long wall_guard_hits;            /* normal-velocity corrections by the wall guard on this rank */
+  /* scheme riemann (engine_step_dual.c) */
+  double lattice_w_sum;            /* sum of W over the undisturbed lattice, self included [1/m^dim] */
+  double tv_pressure;              /* background pressure of the transport velocity this step [Pa] */
+  double dt_acoustic;              /* the last acoustic sub-step [s] */
+  long n_acoustic;                 /* acoustic sub-steps of the last advection step */
+  int dual_ops[ENGINE_MAX_OPS];    /* index in ops of each of its operations, -1 when absent */
+};
+
+/** Set up the engine for case c: lock the output folder for the run (refused with 1 when
+ *  another run holds it), generate particles (or, with `restart` non-NULL, read them and
+ *  the run state from that checkpoint), partition, distribute, open outputs.
+ *  Returns 0, or the exit status (1 bad input, 3 I/O) with a message printed on rank 0. */
+int engine_init(struct engine *e, const struct case_def *c, const char *outdir,
+                const char *restart, MPI_Comm comm);
+
+/** Run to t_end (or max_steps), or until a stop signal; write the final outputs and the
+ *  checkpoint. Returns the exit status (0, also after a stop signal; 2 unstable, 3 I/O). */
+int engine_run(struct engine *e);
+
+/** 1 when the run has reached time.end or time.max_steps. */
+int engine_finished(const struct engine *e);
+
+/** Global fluid and wall particle counts. Collective. */
+void engine_global_counts(const struct engine *e, double *n_fluid, double *n_wall);
+
+/** Print (rank 0) the summary of the `steps` steps run in loop_seconds [s]: throughput, time
+ *  per operation, peak memory; and write it, with every rank's memory, to OUTDIR/timings.csv
+ *  (through a temporary name) for the benchmark driver. Collective. */
+void engine_report(struct engine *e, long steps, double loop_seconds);
+
+/** Print (stderr) the step, time, stage, id, phase and position of particle i and what tripped. */
+void engine_report_particle(const struct engine *e, long i, const char *what);
+
+/** Free everything and release the output folder's lock. */
+void engine_free(struct engine *e);
+
+/** Advance one RK4 step (all stages, dt from the first stage), or with scheme riemann one
+ *  advection step (engine_step_dual). Returns 0 or 2 if a check tripped. */
+int engine_step(struct engine *e);
+
+/** Scheme riemann: one advection step of the dual-criteria time stepping (paper 002 section 2.5):
+ *  density re-initialisation, transport-velocity shift of the light phases, then position-Verlet
+ *  acoustic sub-steps up to the advection step e->dt. Returns 0 or 2 if a check tripped. */
+int engine_step_dual(struct engine *e);
+
+/** Scheme riemann: the operations of its pipeline (run by engine_step_dual). */
+void engine_assemble_dual(struct engine *e);
+
+/** Scheme riemann: the advection step 0.25 h / U (U the largest fluid speed, at least
+ *  physics.u_max; h^2/(4 nu) with viscosity) cut so that the particles' motion in it, with the
+ *  largest transport-velocity shift of acceleration a_tv [m/s^2], stays within the cell skin
+ *  [s]. Collective. */
+double dual_advection_dt(struct engine *e, double a_tv);
+
+/** Scheme riemann: the acoustic sub-step time.cfl h / (c_max + |v|_max) [s]. Collective. */
+double dual_acoustic_dt(struct engine *e);
+
+/** Run operation k of the pipeline (a pass or a halo update), timed. */
+void engine_run_op(struct engine *e, int k);
+
+/** After an RK stage: stop (2 on every rank) if an owned fluid particle has a non-finite
+ *  derivative (drho/dt, du/dt, shifting velocity), else 0. Collective. */
+int engine_check_derivatives(struct engine *e);
+
+/** After the time step e->dt [s] is computed (limit: the name of its smallest term): 2 if it is
+ *  below time.dt_min or not finite, naming the particle with the largest acceleration; else 0.
+ *  Collective only when it trips, which it does on every rank alike. */
+int engine_check_dt(struct engine *e, const char *limit);
+
+/** After a step, on the new state: stop (2 on every rank) if a particle left the domain
+ *  (left_domain: its index on this rank, or -1), lies deeper than half a dx inside a wall's
+ *  solid, or has a density outside its phase's density_band, else 0. Collective. */
+int engine_check_state(struct engine *e, long left_domain);
+
+/** Migrate, sort, rebuild the halo and the cell index after positions changed.
+ *  Returns 0 or 2 (a particle left the domain or jumped beyond the neighbouring ranks). */
+int engine_rebuild(struct engine *e);
+
+/** Re-partition the cells with METIS from the current particle weights and redistribute. */
+int engine_repartition(struct engine *e);
+
+/** The largest distance a particle may move within one step: half the cell skin, so that the
+ *  cells and neighbour lists built at the start of the step hold every pair in the kernel
+ *  support at every stage [m]. */
+double engine_shift_max(const struct engine *e);
+
+/** The capillary time-step limit 0.25 (rho_min h^3 / (2 pi sigma))^(1/2), rho_min the smallest
+ *  rho0 of the phases (Brackbill et al. 1992; Adami et al. 2010) [s]. */
+double engine_capillary_dt(const struct engine *e);
+
+/** 1 if slot i is a ghost of a moving wall. */
+static inline int engine_moving_ghost(const struct engine *e, long i) {
+  return e->p.phase[i] == PHASE_WALL && e->c->walls[e->p.wall[i]].moving;
+}
+
+/** Make the work arrays hold at least the current particle capacity (the owned-only ones: the
+ *  owned particles, with room for some to migrate in). */
+void engine_work_reserve(struct engine *e);
+
+/** Bytes held by the work arrays. */
+long engine_work_bytes(struct engine *e);
+
+/** Free the work arrays (every one, also the optional ones) and set them to NULL. */
+void engine_work_free(struct work *w);
+
+/** Evaluate the stage pipeline at the current state (skip_state_halo: the halo is fresh). */
+void engine_evaluate(struct engine *e, int skip_state_halo);
+
+/** Wall ghost values (pressure, velocity, density, mass) from the current fluid state, outside
+ *  the timed stage pipeline: for the outputs at the start of a run, before any stage has set
+ *  them; with delta-sph also the Shepard density and pressure first (what the next stage
+ *  recomputes), for every snapshot and probe row. Collective. */
+void engine_ghosts_now(struct engine *e);
+
+/** Assemble the pipeline of passes and halo updates the case needs; allocate its arrays. On a
+ *  re-assembly the operations that stay keep their accumulated time and pairs. */
+void engine_assemble(struct engine *e);
+
+/** Print the active terms and the pipeline (rank 0). */
+void engine_print_pipeline(const struct engine *e);
+
+/** Snapshot, stats and probe output when due (force = write them now), then the checkpoint
+ *  when output.checkpoint_interval is due (never when forced). Returns 0 or 3 (every rank). */
+int engine_output(struct engine *e, int force);
+
+/** Collective: make the rows of stats.csv and probes.csv durable (fsync), then write
+ *  checkpoint.h5, whose restart keeps those rows. Returns 0 or 3 with a message (every rank). */
+int engine_checkpoint(struct engine *e);
+
+/** The /header of a snapshot or checkpoint at the given time [s] and step. */
+struct snapshot_info engine_snapshot_info(const struct engine *e, double time, long step);
+
+/** Open the output files (config.yaml, stats.csv, probes.csv). After a restart, stats.csv and
+ *  probes.csv keep their rows up to the checkpoint's step and are appended to. Returns 0, or 1
+ *  (with a message) when the output folder cannot be written: a bad -o is bad input. */
+int engine_open_output(struct engine *e);
+
+/** After an instability: write the failing state (unstable_failing.h5) and the state at the start
+ *  of the step (unstable_last_good.h5). Collective. Returns 0 or 3. */
+int engine_write_failure(struct engine *e);
+
+/** Collective: close stats.csv and probes.csv; a table whose write failed is cut back to its
+ *  complete rows. Returns 0, or 3 (every rank) when a write or the close failed. */
+int engine_close_output(struct engine *e);
+
+#endif

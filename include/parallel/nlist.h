@@ -1,0 +1,78 @@
+/* nlist.h — per-step neighbour lists of the owned fluid particles (Verlet lists without a skin
+ * of their own: the cell skin bounds how far particles may move within a step), stored as one
+ * bit per candidate of the cell stencil. */
+#ifndef MPSPH_NLIST_H
+#define MPSPH_NLIST_H
+
+#include <stdint.h>
+#include "base/parts.h"
+#include "parallel/space.h"
+
+/** The candidates of a particle are the slots of the cells around its cell (space.h
+ *  neighbour_ranges), concatenated in global cell order then slot order; its list is a bit mask
+ *  over them, bit b set when candidate b lies within the build radius. All fluid particles of a
+ *  cell have masks of the same length, stored one after the other in slot order (wall ghosts
+ *  have none), so a mask costs
+ *  ceil(candidates / 64) words instead of 4 bytes per neighbour, and reading it back yields the
+ *  neighbours in the same fixed global order on any rank count. */
+struct nlist_cell {
+  long first_word;       /* first word of the masks of the cell's particles */
+  int words;             /* words per mask */
+};
+
+struct nlist {
+  struct nlist_cell *cells;   /* [n_owned_cells]: where owned cell k's masks are */
+  uint64_t *bits;        /* the masks */
+  int *candidates;       /* scratch: the candidate slots of the cell being read (nlist_enter_cell) */
+  long capacity, cell_capacity, candidate_capacity;   /* words, cells, slots */
+  double radius2;        /* build radius^2 [m^2] */
+};
+
+/** The neighbours of one particle, read back from its mask with neighbours_next (which
+ *  consumes the bits: copy it to read the list again). */
+struct neighbours {
+  const uint64_t *mask;
+  const int *candidates;   /* slot of each candidate */
+  int words, w;            /* words of the mask, the word being read */
+  uint64_t bits;           /* the bits of word w not read yet */
+};
+
+/** The next neighbour slot into *j; 0 when the list is exhausted. */
+static inline int neighbours_next(struct neighbours *nb, long *j) {
+  while (!nb->bits) {
+    if (++nb->w >= nb->words) return 0;
+    nb->bits = nb->mask[nb->w];
+  }
+  *j = nb->candidates[nb->w * 64 + __builtin_ctzll(nb->bits)];
+  nb->bits &= nb->bits - 1;
+  return 1;
+}
+
+/** Build the masks of the owned fluid particles of p (wall ghosts get none): every other slot
+ *  within `radius` [m] at the current positions. Grows the arrays (geometrically) only when
+ *  they are too small. */
+void nlist_build(struct nlist *l, const struct space *s, const struct parts *p, double radius);
+
+/** Make the candidates of a cell whose stencil ranges are r the ones nlist_of reads back (once per
+ *  cell, before the lists of its particles). */
+void nlist_enter_cell(struct nlist *l, const struct neighbour_ranges *r);
+
+/** The neighbours of the f-th fluid particle (counted from 0 in slot order) of owned cell number
+ *  k (s->owned_cells[k]), as of the last build; nlist_enter_cell must have been called with the
+ *  cell's ranges, whose candidates stay valid until the next call. */
+static inline struct neighbours nlist_of(const struct nlist *l, long k, long f) {
+  const int words = l->cells[k].words;
+  const uint64_t *mask = l->bits + l->cells[k].first_word + f * words;
+  return (struct neighbours){mask, l->candidates, words, 0, words ? mask[0] : 0};
+}
+
+/** An empty list (wall ghosts). */
+static inline struct neighbours nlist_none(void) { return (struct neighbours){0}; }
+
+/** Free the arrays. */
+void nlist_free(struct nlist *l);
+
+/** Bytes held by the lists (masks, cell offsets, read-back scratch). */
+long nlist_bytes(const struct nlist *l);
+
+#endif

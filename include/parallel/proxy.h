@@ -1,0 +1,63 @@
+/* proxy.h — halo exchange with neighbouring ranks: one proxy per neighbouring rank holding the
+ * cells this rank sends to it, the particles it receives, buffers and requests. */
+#ifndef MPSPH_PROXY_H
+#define MPSPH_PROXY_H
+
+#include <mpi.h>
+#include "base/parts.h"
+#include "parallel/space.h"
+
+struct proxy {
+  int rank;               /* the neighbouring rank */
+  long n_cells_out;
+  long *cells_out;        /* owned cells within halo reach of the neighbour's cells, ascending */
+  long n_send, n_recv;    /* particles sent / received in the current halo */
+  long *send_index;       /* owned slots sent, in (cell, id) order */
+  long send_index_cap;
+  long recv_first;        /* first halo slot of the received particles */
+  double *send_buf, *recv_buf;
+  long send_cap, recv_cap;   /* buffer capacities in doubles */
+};
+
+struct halo {
+  MPI_Comm comm;
+  int n_proxies;
+  struct proxy *proxies;
+  int *proxy_of_rank;     /* proxy index of each rank, -1 if not a neighbour */
+  MPI_Request *requests;  /* scratch: 2 (n_proxies + 1) requests */
+  long *counts;           /* scratch: 4 (n_proxies + 1) counts */
+  long n_messages, n_bytes;   /* counters since start */
+};
+
+/** Bytes held by the proxies (cell and send lists, message buffers). */
+long halo_bytes(const struct halo *h);
+
+/** Build the proxies from the cell ownership of s (after every partition change). */
+void halo_build(struct halo *h, const struct space *s, MPI_Comm comm);
+
+/** Free the proxies. */
+void halo_free(struct halo *h);
+
+/** Copy every field of the owned particles in the neighbours' halo cells into this rank's halo
+ *  slots [n_owned, n_owned + n_halo); sets p->n_halo. Owned particles must be sorted. */
+void halo_rebuild(struct halo *h, const struct space *s, struct parts *p);
+
+/** Refresh the listed per-particle arrays (indexed by slot) in the halo slots, with
+ *  non-blocking messages to the neighbouring ranks only. */
+void halo_update(struct halo *h, const struct parts *p, double *const *fields, int n_fields);
+
+/** Send owned particles whose cell now belongs to another rank to that rank (a neighbour) and
+ *  append the particles received. Returns the id of a particle that moved beyond the
+ *  neighbouring ranks (then nothing is sent or changed), or -1. */
+int64_t halo_migrate(struct halo *h, const struct space *s, struct parts *p);
+
+/** Values per particle in a full-particle message. */
+int parts_packed_size(const struct parts *p);
+
+/** Pack particle i into buf (parts_packed_size doubles). */
+void parts_pack(const struct parts *p, long i, double *buf);
+
+/** Unpack a particle from buf into slot j. */
+void parts_unpack(struct parts *p, long j, const double *buf);
+
+#endif

@@ -1,0 +1,182 @@
+/* passes.h — the passes over particles and neighbour pairs that build the right-hand sides. */
+#ifndef MPSPH_PASSES_H
+#define MPSPH_PASSES_H
+
+#include "engine/engine.h"
+
+/** The separation r_i - r_j of slots i and j into dx [m]; returns its squared length [m^2]. */
+static inline double pair_separation(const struct parts *p, int dim, long i, long j, double *dx) {
+  double r2 = 0;
+  for (int d = 0; d < dim; d++) {
+    dx[d] = p->x[d][i] - p->x[d][j];
+    r2 += dx[d] * dx[d];
+  }
+  return r2;
+}
+
+/** Body force per unit mass at particle i: gravity and the quadratic potential [m/s^2]. */
+static inline void body_acceleration(const struct engine *e, long i, double *f) {
+  const struct case_def *c = e->c;
+  double w2 = c->potential_omega * c->potential_omega;
+  for (int d = 0; d < e->p.dim; d++) f[d] = c->gravity[d] - w2 * (e->p.x[d][i] - c->potential_centre[d]);
+}
+
+/** Harmonic mean 2 a b/(a + b) of two viscosities [Pa s], the viscosity of a pair of phases
+ *  (Hu & Adams 2006); 0 when either is 0. */
+static inline double harmonic_mean(double a, double b) { return a + b > 0 ? 2.0 * a * b / (a + b) : 0.0; }
+
+/** Dynamic viscosity of phase ph in the pair viscous terms of schemes same-phase-continuity and
+ *  generalized-dissipation: the phase's own plus the artificial viscosity
+ *  alpha h c0 rho0 / (2 (dim + 2)) [Pa s]. */
+static inline double phase_viscosity_total(const struct engine *e, int ph) {
+  const struct phase *f = &e->c->phases[ph];
+  return f->viscosity + e->c->alpha * e->h * f->c0 * f->rho0 / (2.0 * (e->p.dim + 2));
+}
+
+/** Work on owned particle i with its neighbour list (empty for wall ghosts). */
+typedef void (*particle_fn)(struct engine *e, long i, const struct neighbours *nb);
+
+/** Call fluid (or wall, for wall ghosts; either may be NULL) for every owned particle, in slot
+ *  order (which is global cell order). */
+void pass_for_each_owned(struct engine *e, particle_fn fluid, particle_fn wall);
+
+/** Build the neighbour lists of the owned fluid particles (once per step, at the first stage). */
+void pass_neighbour_lists(struct engine *e);
+
+/** Volumes m/rho of all slots (owned and halo) for the pair passes of this stage [m^dim]; runs
+ *  after the halo updates of the state and the wall ghost values. */
+void pass_volumes(struct engine *e);
+
+/** Shepard sums at one point: {sum W V, and sum W V times p, rho, u[3]} over every fluid phase
+ *  (all) and over each phase on its own (phase[k]); per phase also sum W V rho r[3] when
+ *  with_rho_r (the density-weighted interface pressure's ghosts need it). */
+enum { SHEPARD_W, SHEPARD_P, SHEPARD_RHO, SHEPARD_U, SHEPARD_RHO_R = SHEPARD_U + 3, SHEPARD_SUMS = SHEPARD_RHO_R + 3 };
+struct shepard {
+  double all[SHEPARD_SUMS], phase[CASE_MAX_PHASES][SHEPARD_SUMS];
+  int with_rho_r;
+};
+
+/** Called for each slot j within the kernel support of a point, with wv = W V_j [-]. */
+typedef void (*near_fn)(void *ctx, const struct engine *e, long j, double wv);
+
+/** Call fn for every fluid particle (and wall ghost if with_walls) within the kernel support of
+ *  xs, over the cells around xs's cell in global cell order; returns the number of calls. */
+long visit_near(const struct engine *e, const double *xs, int with_walls, near_fn fn, void *ctx);
+
+/** Shepard sums per phase at xs over the fluid particles of the cells around xs's cell; counts
+ *  the pairs into *pairs. */
+void shepard_at(const struct engine *e, const double *xs, struct shepard *s, long *pairs);
+
+/** The mirror point of wall ghost k now [m]: its position plus its body-frame offset (the
+ *  mirror array), turned with the wall. */
+void wall_mirror_point(const struct engine *e, long k, double *xs);
+
+/** Wall ghosts: Shepard interpolation of p, u, rho at the mirror point (over every phase, or
+ *  with the density-weighted interface pressure over the phase with the largest Shepard weight
+ *  there), hydrostatic and inertial pressure correction (from the mirror point, or with the
+ *  density-weighted interface pressure and several phases from each neighbour with its own
+ *  density) and free-/no-slip velocity (Marrone et al. 2011). Owned ghosts only. */
+void pass_wall_ghosts(struct engine *e);
+
+/** Scheme delta-sph, per stage: the same-phase Shepard density of the owned fluid (paper 001
+ *  Eq. 13) and the pressure from it. */
+void pass_shepard_density(struct engine *e);
+
+/** The density the renormalised gradient and the delta-SPH diffusion act on: the Shepard density
+ *  with scheme delta-sph, otherwise the state density. */
+static inline const double *diffused_density(const struct engine *e) {
+  return (e->features & FEAT_SHEPARD) ? e->w.rho_s : e->p.rho;
+}
+
+/** Scheme same-phase-continuity, per stage: the Shepard pressure of every owned fluid particle
+ *  over the fluid of all phases, itself included (paper 003 Eq. 26, AMB-003-2 of the notes) [Pa]. */
+void pass_shepard_pressure(struct engine *e);
+
+/** Scheme same-phase-continuity, per stage: drho/dt with the velocity divergence over same-phase
+ *  neighbours and walls and the delta diffusion over all neighbours, du/dt with the pressure
+ *  gradient and viscosity over all neighbours, other-phase neighbours entering with their
+ *  Shepard pressure and its density in the phase of i (paper 003 Eqs. 23-27). */
+void pass_same_phase_rhs(struct engine *e);
+
+/** Scheme same-phase-continuity: add to acc the wall repulsion of paper 003 Eq. 39 on gas
+ *  particle i from wall ghost b, c0 |(u_i - u_b).n_b| W_ib h^d / |r_ib.n_b| along the ghost's unit
+ *  normal n_b (toward its mirror point) while i approaches the wall, else nothing [m/s^2]. */
+void spc_wall_repulsion(const struct engine *e, long i, long b, double *acc);
+
+/** Per stage: particle volumes; renormalised density gradient over same-phase neighbours
+ *  (paper 000 Eq. 7); velocity divergence over all neighbours; with shifting, the shifting
+ *  velocity du of Eqs. 13-15. */
+void pass_gradients(struct engine *e);
+
+/** Free-surface detection (Marrone et al. 2010): smallest eigenvalue of B over all neighbours,
+ *  normal, umbrella scan of the candidates. Sets surface, normal, lambda of owned fluid. */
+void pass_free_surface(struct engine *e);
+
+/** The free-surface region: detected particles and those within surface_band h of one. */
+void pass_surface_band(struct engine *e);
+
+/** Shifting velocity of owned fluid particle i from sum_j grad_i W_ij V_j (Eqs. 13-15). */
+void shifting_velocity(struct engine *e, long i, const double *sum_gradw, int n_neighbours);
+
+/** Continuity (divergence, delta-SPH diffusion, delta-u terms) and momentum (pressure gradient
+ *  with tensile control, viscosity, delta-u term, acoustic damper, sharpness force, body forces)
+ *  right-hand sides of owned fluid particles (paper 000 Eqs. 5-10, 16-20). */
+void pass_fluid_rhs(struct engine *e);
+
+/** Surface tension, first pass: the colour gradient over the fluid neighbours of the other
+ *  phases, its magnitude [1/m] and unit normal of owned fluid particles (both 0 where the
+ *  gradient is below 0.01/h); 0 for wall ghosts. */
+void pass_interface_normals(struct engine *e);
+
+/** Surface tension, second pass (after pass_fluid_rhs, the normals halo-updated): curvature
+ *  kappa = div n (renormalised divergence) [1/m] and the CSF acceleration
+ *  -sigma kappa n |grad chi| / rho added to du/dt of owned fluid particles (Brackbill et al. 1992). */
+void pass_surface_tension(struct engine *e);
+
+/** Wall guard, after every force of the stage (src/engine/wall_guard.c): an owned fluid particle within
+ *  physics.wall_guard x dx of a wall's boundary (or inside its solid) loses the part of du/dt
+ *  (relative to the wall's acceleration) that points into the wall while it is not moving away
+ *  from it, and the part of its shifting velocity that points into the wall. */
+void pass_wall_guard(struct engine *e);
+
+/** Scheme riemann: 1 if phase ph is a light phase: a gas (not `incompressible`) and a phase with a
+ *  larger rho0 exists. */
+int riemann_light_phase(const struct case_def *c, int ph);
+
+/** Sum of W(|r|) over the nodes r of the lattice of spacing dx [m], r = 0 included [1/m^dim]. */
+double lattice_kernel_sum(const struct kernel *k, double dx);
+
+/** Scheme riemann, once per advection step: density re-initialisation of the owned fluid (paper
+ *  002 Eqs. 10-11) and the pressure from it. */
+void pass_density_reinit(struct engine *e);
+
+/** Scheme riemann: du/dt of the owned fluid from the Riemann pressure, viscosity and body forces
+ *  (paper 002 Eq. 6). */
+void pass_riemann_momentum(struct engine *e);
+
+/** Scheme riemann: drho/dt of the owned fluid with the Riemann interface velocity (Eqs. 6, 9). */
+void pass_riemann_continuity(struct engine *e);
+
+/** Scheme riemann: the transport-velocity acceleration -(2 p0_tv / rho_i) sum_j V_j grad_i W_ij of
+ *  the owned light-phase particles into dv (0 for the heavy phase) [m/s^2] (Eq. 12). */
+void pass_transport_acceleration(struct engine *e);
+
+/** Scheme generalized-dissipation, first pass: the Shepard sum Gamma (with the particle itself)
+ *  and the renormalised pressure gradient <grad p>^L over all neighbours, phases and wall ghosts
+ *  of owned fluid (paper 004 Eqs. 9, 47-48; 0 where the matrix is near-singular); Gamma = 1 and
+ *  no gradient for wall ghosts. */
+void pass_gd_gradients(struct engine *e);
+
+/** Scheme generalized-dissipation, second pass: continuity with the generalized density
+ *  dissipation and its volume correction factor (paper 004 Eqs. 7, 36, 46 or 49 by
+ *  physics.dissipation_form) and momentum with Grenier's pressure gradient, the Hu-Adams
+ *  viscosity and the body forces (Eqs. 9, 10) of owned fluid. */
+void pass_gd_rhs(struct engine *e);
+
+/** The time step of paper 004 Eq. 23 [s]: cfl h / (c_max + u_max) (u_max the largest advection
+ *  speed [m/s]; the paper's cfl is 0.25), 0.25 (h/a)^1/2 with a the larger of |g| and a_max
+ *  (the largest acceleration [m/s^2]), 0.125 rho0 h^2 / mu per phase and, with surface tension,
+ *  0.5 (rho0_min h^3 / (2 pi sigma))^1/2; *limit names the smallest. */
+double gd_time_step(const struct engine *e, double a_max, double u_max, const char **limit);
+
+#endif

@@ -1,0 +1,1299 @@
+/* case_load.c — read a YAML case file (plus --set overrides) into struct case_def, validating
+ * every key with one-line messages "<file>:<line>: <key.path>: <what is wrong>, <expected>",
+ * and write a resolved case back as YAML. */
+#include "case/case_load.h"
+
+#include <errno.h>
+#include <fcntl.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "case/geometry.h"
+#include "base/mem.h"
+#include "case/yaml_tree.h"
+
+#define PATH_LEN 256
+#define LIST_LEN 512
+#define REQUIRED NAN   /* the default of a required number */
+#define CASE_MAX_FILE_BYTES (1 << 20)   /* largest case file read [bytes] */
+
+/* Enumeration spellings, in the order of the enums of case.h. */
+static const char *const SCHEME_NAMES[] = {"delta-plus", "delta-sph", "same-phase-continuity",
+                                           "generalized-dissipation", "riemann", NULL};
+static const char *const KERNEL_NAMES[] = {"gaussian", "wendland-c2", NULL};
+static const char *const SHAPE_NAMES[] = {"box", "circle", "polygon", NULL};
+static const char *const SLIP_NAMES[] = {"free", "no", NULL};
+static const char *const SIDE_NAMES[] = {"inside", "outside", NULL};
+static const char *const SHIFTING_NAMES[] = {"none", "consistent", "position", NULL};
+static const char *const PROBE_KIND_NAMES[] = {"pressure", "elevation", "integral", NULL};
+static const char *const INTERP_NAMES[] = {"shepard", "mls", NULL};
+static const char *const PRESSURE_NAMES[] = {"hydrostatic", "zero", NULL};
+static const char *const BOOL_NAMES[] = {"false", "true", NULL};
+static const char *const FREE_SURFACE_NAMES[] = {"auto", "on", "off", NULL};
+static const char *const DAMPER_NAMES[] = {"difference", "symmetric", NULL};
+static const char *const IFACE_P_NAMES[] = {"sum", "density-weighted", NULL};
+static const char *const IFACE_VISC_NAMES[] = {"none", "harmonic", NULL};
+static const char *const SPC_MODEL_NAMES[] = {"present", "conventional", NULL};
+static const char *const DISSIPATION_NAMES[] = {"consistent", "printed", NULL};
+static const char *const RAMP_NAMES[] = {"none", "linear", "smooth", NULL};
+
+/* The keys allowed in each mapping. */
+static const char *const ROOT_KEYS[] = {"name", "description", "dimension", "scheme", "kernel",
+                                        "resolution", "gravity", "potential", "time", "output", "domain",
+                                        "phases", "fluids", "walls", "physics", "initial",
+                                        "probes", "parallel", NULL};
+static const char *const RESOLUTION_KEYS[] = {"dx", "h_over_dx", "origin", NULL};
+static const char *const TIME_KEYS[] = {"end", "cfl", "max_steps", "dt_min", NULL};
+static const char *const OUTPUT_KEYS[] = {"interval", "stats_interval", "probes_interval",
+                                          "progress_interval", "checkpoint_interval", NULL};
+static const char *const BOX_KEYS[] = {"min", "max", NULL};
+static const char *const CIRCLE_KEYS[] = {"centre", "radius", "inner_radius", NULL};
+static const char *const PHASE_KEYS[] = {"name", "rho0", "c0", "gamma", "p_background",
+                                         "viscosity", "incompressible", "density_band", NULL};
+static const char *const FLUID_KEYS[] = {"phase", "box", "circle", "polygon", "velocity",
+                                         "velocity_gradient", "velocity_mode", NULL};
+static const char *const MODE_KEYS[] = {"amplitude", "wavelength", "interface", NULL};
+static const char *const POTENTIAL_KEYS[] = {"omega", "centre", NULL};
+static const char *const WALL_KEYS[] = {"box", "circle", "polygon", "slip", "fluid_side", "motion", NULL};
+static const char *const MOTION_KEYS[] = {"translation", "rotation", "table", "centre", NULL};
+static const char *const TRANSLATION_KEYS[] = {"amplitude", "period", "phase", "ramp", NULL};
+static const char *const ROTATION_KEYS[] = {"amplitude", "period", "phase", "ramp", "centre", NULL};
+static const char *const RAMP_KEYS[] = {"shape", "time", NULL};
+static const char *const PHYSICS_KEYS[] = {"delta", "artificial_viscosity", "acoustic_damper",
+                                           "shifting", "u_max", "tensile_control", "free_surface",
+                                           "surface_band", "interface_mode", "damper_form",
+                                           "interface_sharpness", "limit_surface_shifting",
+                                           "interface_pressure", "interface_viscosity", "surface_tension", "wall_guard", "spc_model",
+                                           "dissipation_form", NULL};
+static const char *const INITIAL_KEYS[] = {"pressure", NULL};
+static const char *const PROBE_KEYS[] = {"name", "kind", "position", "diameter", "axis",
+                                         "interpolation", "phase", NULL};
+static const char *const PARALLEL_KEYS[] = {"repartition_threshold", "repartition_every", NULL};
+
+static const char *const ALNUM = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789";
+static const char *const NAME_PUNCT = "._-";   /* case and phase names (a directory name) */
+static const char *const PROBE_PUNCT = "_";    /* probe names (a CSV column) */
+
+/* The values a number may take. */
+struct rule {
+  const char *expected;
+  double lo;
+  int lo_open;          /* lo itself excluded */
+  double hi;
+  int integer;
+};
+static const struct rule R_ANY = {"a number", -HUGE_VAL, 0, HUGE_VAL, 0};
+static const struct rule R_POSITIVE = {"a number > 0", 0, 1, HUGE_VAL, 0};
+static const struct rule R_NONNEGATIVE = {"a number >= 0", 0, 0, HUGE_VAL, 0};
+static const struct rule R_CFL = {"a number > 0 and <= 2", 0, 1, 2, 0};
+static const struct rule R_COUNT = {"an integer >= 0", 0, 0, 1e18, 1};
+static const struct rule R_DIMENSION = {"2 or 3", 2, 0, 3, 1};
+static const struct rule R_MODE = {"an integer from 1 to 4", 1, 0, 4, 1};
+static const struct rule R_H_OVER_DX = {"a number > 0 and <= 10", 0, 1, 10, 0};
+
+/* Default density bands [min, max] / rho0 of the instability check: a liquid, a gas. */
+static const double LIQUID_BAND[2] = {0.5, 2.0}, GAS_BAND[2] = {0.1, 10.0};
+#define DT_MIN_FRACTION 1e-6   /* default time.dt_min / the acoustic step CFL h / max c0 */
+#define WALL_GUARD_DX 0.25     /* default physics.wall_guard [dx] */
+
+/* Loader state: where messages go and the dimension read so far. */
+struct ld {
+  char *err;
+  size_t err_len;
+  int dim;
+};
+
+/* A mapping being read; node NULL when absent (every key then takes its default). */
+struct map {
+  struct ld *ld;
+  const struct ynode *node;
+  const struct ynode *at;    /* node, or the nearest present ancestor: where missing keys are */
+  char path[PATH_LEN];
+};
+
+/* ---- messages ---- */
+
+static int vfail(struct ld *ld, const char *source, int line, const char *path, const char *fmt,
+                 va_list ap) {
+  if (ld->err_len == 0) return 1;
+  int k = snprintf(ld->err, ld->err_len, "%s:%d: %s%s", source, line, path, path[0] ? ": " : "");
+  if (k >= 0 && (size_t)k < ld->err_len) vsnprintf(ld->err + k, ld->err_len - (size_t)k, fmt, ap);
+  return 1;
+}
+
+/* Report an error at node `at`; returns 1. */
+static int fail(struct ld *ld, const struct ynode *at, const char *path, const char *fmt, ...) {
+  va_list ap;
+  va_start(ap, fmt);
+  vfail(ld, at->source, at->line, path, fmt, ap);
+  va_end(ap);
+  return 1;
+}
+
+/* Report an error at an explicit source and line; returns 1. */
+static int fail_at(struct ld *ld, const char *source, int line, const char *path, const char *fmt,
+                   ...) {
+  va_list ap;
+  va_start(ap, fmt);
+  vfail(ld, source, line, path, fmt, ap);
+  va_end(ap);
+  return 1;
+}
+
+static const char *names_list(const char *const *names, char *buf) {
+  buf[0] = '\0';
+  for (int i = 0; names[i]; i++) {
+    size_t k = strlen(buf);
+    snprintf(buf + k, LIST_LEN - k, "%s%s", i ? ", " : "", names[i]);
+  }
+  return buf;
+}
+
+/* How a node looks in a message: 'text', the string "text", a list of n items, a mapping. */
+static const char *shown(const struct ynode *v, char *buf, size_t len) {
+  if (v->kind == YNODE_MAPPING) return "a mapping";
+  if (v->kind == YNODE_SEQUENCE)
+    snprintf(buf, len, "a list of %d item%s", v->n, v->n == 1 ? "" : "s");
+  else
+    snprintf(buf, len, v->plain ? "'%.60s'" : "the string \"%.60s\"", v->text);
+  return buf;
+}
+
+static int fail_got(struct ld *ld, const struct ynode *v, const char *path, const char *expected) {
+  char buf[96];
+  return fail(ld, v, path, "got %s, expected %s", shown(v, buf, sizeof buf), expected);
+}
+
+static const char *fmt_vec(char *buf, size_t len, const double *v, int n) {
+  int k = snprintf(buf, len, "[");
+  for (int i = 0; i < n && k > 0 && (size_t)k < len; i++)
+    k += snprintf(buf + k, len - (size_t)k, "%s%g", i ? ", " : "", v[i]);
+  if (k > 0 && (size_t)k < len) snprintf(buf + k, len - (size_t)k, "]");
+  return buf;
+}
+
+/* ---- paths and lookups ---- */
+
+static void join(char *out, const char *parent, const char *key) {
+  if (snprintf(out, PATH_LEN, "%s%s%s", parent, parent[0] ? "." : "", key) >= PATH_LEN)
+    out[PATH_LEN - 1] = '\0';
+}
+
+static void join_index(char *out, const char *parent, int i) {
+  char index[16];
+  snprintf(index, sizeof index, "%d", i);
+  join(out, parent, index);
+}
+
+/* The value of key in m (NULL if absent); its path goes to path. */
+static const struct ynode *get(const struct map *m, const char *key, char *path) {
+  join(path, m->path, key);
+  return ytree_get(m->node, key);
+}
+
+static int missing(const struct map *m, const char *path, const char *expected) {
+  return fail(m->ld, m->at, path, "missing required key, expected %s", expected);
+}
+
+static int check_keys(const struct map *m, const char *const *allowed) {
+  for (int i = 0; i < m->node->n; i++) {
+    const struct yentry *e = &m->node->entries[i];
+    int known = 0;
+    for (int k = 0; allowed[k]; k++) known |= strcmp(e->key, allowed[k]) == 0;
+    if (known) continue;
+    char path[PATH_LEN], names[LIST_LEN];
+    join(path, m->path, e->key);
+    return fail_at(m->ld, e->value->source, e->key_line, path, "unknown key, allowed keys: %s",
+                   names_list(allowed, names));
+  }
+  return 0;
+}
+
+/* Start reading mapping v (may be NULL) at path, with the given allowed keys. */
+static int open_map(struct ld *ld, const struct ynode *v, const struct ynode *at, const char *path,
+                    const char *const *allowed, struct map *m) {
+  m->ld = ld;
+  m->node = v;
+  m->at = v ? v : at;
+  snprintf(m->path, sizeof m->path, "%s", path);
+  if (!v) return 0;
+  if (v->kind != YNODE_MAPPING) {
+    char expected[LIST_LEN + 32], names[LIST_LEN];
+    snprintf(expected, sizeof expected, "a mapping with keys: %s", names_list(allowed, names));
+    return fail_got(ld, v, path, expected);
+  }
+  return check_keys(m, allowed);
+}
+
+/* Start reading the mapping under key of parent. */
+static int sub(const struct map *parent, const char *key, const char *const *allowed,
+               struct map *m) {
+  char path[PATH_LEN];
+  const struct ynode *v = get(parent, key, path);
+  return open_map(parent->ld, v, parent->at, path, allowed, m);
+}
+
+/* ---- scalar getters ---- */
+
+/* 1 if x is a value the rule allows. */
+static int allowed(const struct rule *r, double x) {
+  return isfinite(x) && (r->lo_open ? x > r->lo : x >= r->lo) && x <= r->hi &&
+         (!r->integer || x == floor(x));
+}
+
+static int number_of(struct ld *ld, const struct ynode *v, const char *path, const struct rule *r,
+                     double *out) {
+  char *end = NULL;
+  double x = 0;
+  if (v->kind == YNODE_SCALAR && v->plain && v->text[0]) x = strtod(v->text, &end);
+  if (!end || *end != '\0' || !allowed(r, x)) return fail_got(ld, v, path, r->expected);
+  *out = x;
+  return 0;
+}
+
+/* The number under key (def when absent; def REQUIRED makes it required). */
+static int num(const struct map *m, const char *key, const struct rule *r, double def,
+               double *out) {
+  char path[PATH_LEN];
+  const struct ynode *v = get(m, key, path);
+  if (v) return number_of(m->ld, v, path, r, out);
+  if (isnan(def)) return missing(m, path, r->expected);
+  if (!allowed(r, def))   /* a default computed from other keys, e.g. an underflow to 0 */
+    return fail(m->ld, m->at, path, "got the default %g computed from the other keys, expected %s: "
+                "set the key", def, r->expected);
+  *out = def;
+  return 0;
+}
+
+static int lnum(const struct map *m, const char *key, const struct rule *r, double def,
+                long *out) {
+  double x;
+  if (num(m, key, r, def, &x)) return 1;
+  *out = (long)x;
+  return 0;
+}
+
+/* The index of the value of key in names (def when absent). */
+static int choice(const struct map *m, const char *key, const char *const *names, int def,
+                  int *out) {
+  char path[PATH_LEN], list[LIST_LEN], buf[96];
+  const struct ynode *v = get(m, key, path);
+  *out = def;
+  if (!v) return 0;
+  for (int i = 0; names[i]; i++)
+    if (v->kind == YNODE_SCALAR && strcmp(v->text, names[i]) == 0) {
+      *out = i;
+      return 0;
+    }
+  return fail(m->ld, v, path, "got %s, allowed values: %s", shown(v, buf, sizeof buf),
+              names_list(names, list));
+}
+
+static int text_ok(const char *s, const char *punct, size_t cap) {
+  size_t n = strlen(s);
+  if (n >= cap) return 0;
+  if (!punct) return 1;
+  for (size_t i = 0; i < n; i++)
+    if (!strchr(ALNUM, s[i]) && !strchr(punct, s[i])) return 0;
+  return n > 0 && strspn(s, ".") < n;
+}
+
+/* The string under key, shorter than cap; punct non-NULL: a name of letters, digits and punct.
+ * def NULL makes it required. */
+static int text(const struct map *m, const char *key, const char *punct, const char *def,
+                size_t cap, char *out) {
+  char path[PATH_LEN], expected[128];
+  const struct ynode *v = get(m, key, path);
+  if (punct)
+    snprintf(expected, sizeof expected, "a name of 1 to %zu characters from [A-Za-z0-9%s]%s",
+             cap - 1, punct, strchr(punct, '.') ? ", not only dots" : "");
+  else
+    snprintf(expected, sizeof expected, "a string of at most %zu characters", cap - 1);
+  if (!v && !def) return missing(m, path, expected);
+  if (v && (v->kind != YNODE_SCALAR || !text_ok(v->text, punct, cap)))
+    return fail_got(m->ld, v, path, expected);
+  snprintf(out, cap, "%s", v ? v->text : def);
+  return 0;
+}
+
+/* ---- vectors, lists and shapes ---- */
+
+/* The n numbers of the list v into out[0..n-1]; expected describes such a list. */
+static int vec_of(struct ld *ld, const struct ynode *v, const char *path, int n,
+                  const char *expected, double *out) {
+  char ipath[PATH_LEN];
+  if (v->kind != YNODE_SEQUENCE || v->n != n) return fail_got(ld, v, path, expected);
+  for (int i = 0; i < n; i++) {
+    join_index(ipath, path, i);
+    if (number_of(ld, v->entries[i].value, ipath, &R_ANY, &out[i])) return 1;
+  }
+  return 0;
+}
+
+/* The dimension-long vector under key; left as it is (zero) when absent and not required. */
+static int vec(const struct map *m, const char *key, int required, double *out) {
+  char path[PATH_LEN], expected[64];
+  const struct ynode *v = get(m, key, path);
+  snprintf(expected, sizeof expected, "a list of %d numbers (one per dimension)", m->ld->dim);
+  if (v) return vec_of(m->ld, v, path, m->ld->dim, expected, out);
+  return required ? missing(m, path, expected) : 0;
+}
+
+/* The density band [min_ratio, max_ratio] under key, 0 <= min_ratio < 1 < max_ratio; def when
+ * absent. */
+static int band(const struct map *m, const char *key, const double *def, double *out) {
+  static const char *expected = "a list [min_ratio, max_ratio] with 0 <= min_ratio < 1 < max_ratio";
+  char path[PATH_LEN], got[128];
+  const struct ynode *v = get(m, key, path);
+  out[0] = def[0];
+  out[1] = def[1];
+  if (!v) return 0;
+  if (vec_of(m->ld, v, path, 2, expected, out)) return 1;
+  if (out[0] >= 0 && out[0] < 1 && out[1] > 1) return 0;
+  return fail(m->ld, v, path, "got %s, expected %s", fmt_vec(got, sizeof got, out, 2), expected);
+}
+
+/* The dimension x dimension matrix under key (list of rows); left zero when absent. */
+static int matrix(const struct map *m, const char *key, double out[3][3]) {
+  char path[PATH_LEN], rpath[PATH_LEN], expected[96];
+  const struct ynode *v = get(m, key, path);
+  int dim = m->ld->dim;
+  snprintf(expected, sizeof expected, "a list of %d rows of %d numbers", dim, dim);
+  if (!v) return 0;
+  if (v->kind != YNODE_SEQUENCE || v->n != dim) return fail_got(m->ld, v, path, expected);
+  for (int i = 0; i < dim; i++) {
+    join_index(rpath, path, i);
+    if (vec_of(m->ld, v->entries[i].value, rpath, dim, expected, out[i])) return 1;
+  }
+  return 0;
+}
+
+/* The list under key, of lo..hi items (*seq NULL when absent and lo == 0). */
+static int list(const struct map *m, const char *key, int lo, int hi, const char *what,
+                const struct ynode **seq, char *path) {
+  char expected[128];
+  snprintf(expected, sizeof expected, "a list of %d to %d %s", lo, hi, what);
+  *seq = get(m, key, path);
+  if (!*seq) return lo > 0 ? missing(m, path, expected) : 0;
+  if ((*seq)->kind != YNODE_SEQUENCE || (*seq)->n < lo || (*seq)->n > hi)
+    return fail_got(m->ld, *seq, path, expected);
+  return 0;
+}
+
+/* min and max of a box mapping, max > min in every component. */
+static int corners(const struct map *m, double *lo, double *hi) {
+  if (vec(m, "min", 1, lo) || vec(m, "max", 1, hi)) return 1;
+  for (int d = 0; d < m->ld->dim; d++) {
+    if (hi[d] > lo[d]) continue;
+    char path[PATH_LEN], a[128], b[128];
+    const struct ynode *v = get(m, "max", path);
+    return fail(m->ld, v, path, "got max %s not above min %s, expected max > min in every "
+                "component", fmt_vec(a, sizeof a, hi, m->ld->dim),
+                fmt_vec(b, sizeof b, lo, m->ld->dim));
+  }
+  return 0;
+}
+
+/* The polygon s read from the list seq at path is simple and encloses an area (a crossing,
+ * touching or degenerate one has no well-defined inside). */
+static int polygon_simple(struct ld *ld, const struct ynode *seq, const char *path, const struct shape *s) {
+  int a, b;
+  char pa[128], pb[128], qa[128], qb[128];
+  const double (*v)[2] = s->vertex;
+  int n = s->n_vertices;
+  switch (polygon_fault(s, &a, &b)) {
+  case POLYGON_REPEATED_VERTEX:
+    return fail(ld, seq, path, "vertices %d and %d are the same point %s, expected distinct "
+                "vertices", a, b, fmt_vec(pa, sizeof pa, v[a], 2));
+  case POLYGON_EDGES_MEET:
+    return fail(ld, seq, path, "edges %d (%s to %s) and %d (%s to %s) cross or touch, expected a "
+                "simple polygon (edge k joins vertices k and k + 1)", a, fmt_vec(pa, sizeof pa, v[a], 2),
+                fmt_vec(pb, sizeof pb, v[(a + 1) % n], 2), b, fmt_vec(qa, sizeof qa, v[b], 2),
+                fmt_vec(qb, sizeof qb, v[(b + 1) % n], 2));
+  case POLYGON_NO_AREA:
+    return fail(ld, seq, path, "encloses no area, expected a simple polygon with an inside");
+  default:
+    return 0;
+  }
+}
+
+static int polygon(const struct map *m, struct shape *s) {
+  char path[PATH_LEN], ipath[PATH_LEN];
+  const struct ynode *seq;
+  if (m->ld->dim != 2)
+    return fail(m->ld, get(m, "polygon", path), path,
+                "got a polygon in 3D, expected box or circle (polygons are 2D only)");
+  if (list(m, "polygon", 3, CASE_MAX_VERTICES, "[x, y] vertices", &seq, path)) return 1;
+  s->n_vertices = seq->n;
+  for (int i = 0; i < seq->n; i++) {
+    join_index(ipath, path, i);
+    if (vec_of(m->ld, seq->entries[i].value, ipath, 2, "an [x, y] pair", s->vertex[i])) return 1;
+  }
+  return polygon_simple(m->ld, seq, path, s);
+}
+
+/* The one shape (box, circle or polygon) of a fluid or wall item. */
+static int shape(const struct map *m, struct shape *s) {
+  char names[LIST_LEN];
+  struct map sm;
+  int count = 0;
+  for (int k = 0; SHAPE_NAMES[k]; k++)
+    if (ytree_get(m->node, SHAPE_NAMES[k])) {
+      s->kind = (enum shape_kind)k;
+      count++;
+    }
+  if (count != 1)
+    return fail(m->ld, m->at, m->path, "got %d shapes, expected exactly one of: %s", count,
+                names_list(SHAPE_NAMES, names));
+  switch (s->kind) {
+  case SHAPE_BOX:
+    return sub(m, "box", BOX_KEYS, &sm) || corners(&sm, s->min, s->max);
+  case SHAPE_CIRCLE:
+    if (sub(m, "circle", CIRCLE_KEYS, &sm) || vec(&sm, "centre", 1, s->centre) ||
+        num(&sm, "radius", &R_POSITIVE, REQUIRED, &s->radius) ||
+        num(&sm, "inner_radius", &R_NONNEGATIVE, 0, &s->inner_radius))
+      return 1;
+    if (s->inner_radius < s->radius) return 0;
+    char path[PATH_LEN];
+    return fail(m->ld, ytree_get(sm.node, "inner_radius"), strcat(strcpy(path, sm.path), ".inner_radius"),
+                "got %g, expected a number below radius (%g)", s->inner_radius, s->radius);
+  default:
+    return polygon(m, s);
+  }
+}
+
+static void bbox(const struct shape *s, double *lo, double *hi) {
+  for (int d = 0; d < 3; d++) {
+    lo[d] = s->kind == SHAPE_BOX ? s->min[d] : s->centre[d] - s->radius;
+    hi[d] = s->kind == SHAPE_BOX ? s->max[d] : s->centre[d] + s->radius;
+  }
+  if (s->kind != SHAPE_POLYGON) return;
+  for (int d = 0; d < 2; d++) {
+    lo[d] = hi[d] = s->vertex[0][d];
+    for (int i = 1; i < s->n_vertices; i++) {
+      lo[d] = fmin(lo[d], s->vertex[i][d]);
+      hi[d] = fmax(hi[d], s->vertex[i][d]);
+    }
+  }
+}
+
+/* The point (lo == hi) or bounding box lo..hi given under key lies inside the domain. */
+static int inside(const struct map *m, const char *key, const double *lo, const double *hi,
+                  const struct case_def *c) {
+  int dim = m->ld->dim, point = memcmp(lo, hi, (size_t)dim * sizeof *lo) == 0;
+  for (int d = 0; d < dim; d++) {
+    if (lo[d] >= c->domain_min[d] && hi[d] <= c->domain_max[d]) continue;
+    char path[PATH_LEN], a[128], b[128], dmin[128], dmax[128];
+    const struct ynode *v = get(m, key, path);
+    fmt_vec(a, sizeof a, lo, dim);
+    fmt_vec(b, sizeof b, hi, dim);
+    return fail(m->ld, v, path, "got %s%s%s%s outside the domain, expected %s inside the domain "
+                "min %s max %s", point ? "" : "bounding box min ", a, point ? "" : " max ",
+                point ? "" : b, point ? "a point" : "a shape",
+                fmt_vec(dmin, sizeof dmin, c->domain_min, dim),
+                fmt_vec(dmax, sizeof dmax, c->domain_max, dim));
+  }
+  return 0;
+}
+
+/* The name under "name" of item i of an array (first, stride) differs from the earlier ones. */
+static int unique_name(const struct map *m, const char *first, size_t stride, int i) {
+  const char *name = first + (size_t)i * stride;
+  char path[PATH_LEN];
+  for (int j = 0; j < i; j++)
+    if (strcmp(first + (size_t)j * stride, name) == 0)
+      return fail(m->ld, get(m, "name", path), path, "got '%s' a second time, expected unique "
+                  "names", name);
+  return 0;
+}
+
+/* ---- sections ---- */
+
+typedef int (*item_reader)(const struct map *item, struct case_def *c, int i);
+
+/* Read each mapping of the list under key with fn; the count goes to *n. */
+static int read_list(const struct map *root, const char *key, int lo, int hi, const char *what,
+                     const char *const *allowed, item_reader fn, struct case_def *c, int *n) {
+  char path[PATH_LEN], ipath[PATH_LEN];
+  const struct ynode *seq;
+  struct map m;
+  if (list(root, key, lo, hi, what, &seq, path)) return 1;
+  *n = seq ? seq->n : 0;
+  for (int i = 0; i < *n; i++) {
+    join_index(ipath, path, i);
+    if (open_map(root->ld, seq->entries[i].value, NULL, ipath, allowed, &m) || fn(&m, c, i))
+      return 1;
+  }
+  return 0;
+}
+
+static int read_phase(const struct map *m, struct case_def *c, int i) {
+  struct phase *p = &c->phases[i];
+  return text(m, "name", NAME_PUNCT, NULL, sizeof p->name, p->name) ||
+         unique_name(m, c->phases[0].name, sizeof c->phases[0], i) ||
+         num(m, "rho0", &R_POSITIVE, REQUIRED, &p->rho0) ||
+         num(m, "c0", &R_POSITIVE, REQUIRED, &p->c0) ||
+         num(m, "gamma", &R_POSITIVE, 7, &p->gamma) ||
+         num(m, "p_background", &R_ANY, 0, &p->p_background) ||
+         num(m, "viscosity", &R_NONNEGATIVE, 0, &p->viscosity) ||
+         choice(m, "incompressible", BOOL_NAMES, 0, &p->incompressible) ||
+         band(m, "density_band", p->incompressible ? LIQUID_BAND : GAS_BAND, p->density_band);
+}
+
+static int phase_index(const struct map *m, const struct case_def *c, int *out) {
+  char name[CASE_MAX_NAME], path[PATH_LEN], known[LIST_LEN] = "";
+  if (text(m, "phase", NULL, NULL, sizeof name, name)) return 1;
+  for (int i = 0; i < c->n_phases; i++) {
+    if (strcmp(c->phases[i].name, name) == 0) {
+      *out = i;
+      return 0;
+    }
+    size_t k = strlen(known);
+    snprintf(known + k, sizeof known - k, "%s%s", i ? ", " : "", c->phases[i].name);
+  }
+  return fail(m->ld, get(m, "phase", path), path, "unknown phase '%s', known phases: %s", name,
+              known);
+}
+
+static int shape_inside(const struct map *m, const struct shape *s, const struct case_def *c) {
+  double lo[3], hi[3];
+  bbox(s, lo, hi);
+  return inside(m, SHAPE_NAMES[s->kind], lo, hi, c);
+}
+
+/* The interface mode {amplitude: m/s, wavelength: m, interface: y [m]} of a region (2D only);
+ * inactive when the key is absent. */
+static int read_velocity_mode(const struct map *fluid, struct velocity_mode *mode) {
+  char path[PATH_LEN];
+  struct map m;
+  if (sub(fluid, "velocity_mode", MODE_KEYS, &m)) return 1;
+  mode->active = m.node != NULL;
+  if (!mode->active) return 0;
+  if (fluid->ld->dim != 2)
+    return fail(fluid->ld, get(fluid, "velocity_mode", path), path,
+                "got velocity_mode in 3D (the interface mode is 2D only)");
+  return num(&m, "amplitude", &R_ANY, REQUIRED, &mode->amplitude) ||
+         num(&m, "wavelength", &R_POSITIVE, REQUIRED, &mode->wavelength) ||
+         num(&m, "interface", &R_ANY, REQUIRED, &mode->interface);
+}
+
+static int read_fluid(const struct map *m, struct case_def *c, int i) {
+  struct fluid_region *f = &c->fluids[i];
+  return phase_index(m, c, &f->phase) || shape(m, &f->shape) || shape_inside(m, &f->shape, c) ||
+         vec(m, "velocity", 0, f->velocity) || matrix(m, "velocity_gradient", f->velocity_gradient) ||
+         read_velocity_mode(m, &f->mode);
+}
+
+/* The ramp of a motion law: {shape: none | linear | smooth, time: seconds}. */
+static int read_ramp(const struct map *law, struct motion_law *l) {
+  struct map m;
+  int kind;
+  if (sub(law, "ramp", RAMP_KEYS, &m) || choice(&m, "shape", RAMP_NAMES, RAMP_NONE, &kind)) return 1;
+  l->ramp = (enum ramp_kind)kind;
+  return num(&m, "time", &R_POSITIVE, kind == RAMP_NONE ? 1.0 : REQUIRED, &l->ramp_time);
+}
+
+/* A translation (vector amplitude [m]) or rotation (angle amplitude [rad]) law under key; the
+ * law stays inactive when the key is absent. */
+static int read_law(const struct map *motion, const char *key, const char *const *keys, int vector,
+                    struct motion_law *l, struct map *m) {
+  if (sub(motion, key, keys, m)) return 1;
+  l->active = m->node != NULL;
+  if (!l->active) return 0;
+  return (vector ? vec(m, "amplitude", 1, l->amplitude) : num(m, "amplitude", &R_ANY, REQUIRED, l->amplitude)) ||
+         num(m, "period", &R_POSITIVE, REQUIRED, &l->period) || num(m, "phase", &R_ANY, 0, &l->phase) ||
+         read_ramp(m, l);
+}
+
+/* The rows of the motion table under key: [t, dx, dy, theta] in 2D, [t, dx, dy, dz, theta] in
+ * 3D, 2 to MOTION_MAX_ROWS of them at strictly increasing times. */
+static int read_table(const struct map *m, struct wall_motion *w) {
+  char path[PATH_LEN], ipath[PATH_LEN], expected[96];
+  const struct ynode *seq;
+  int dim = m->ld->dim, n = dim + 2;
+  double row[MOTION_TABLE_COLUMNS];
+  if (list(m, "table", 2, MOTION_MAX_ROWS, "rows [t, displacement..., theta]", &seq, path)) return 1;
+  snprintf(expected, sizeof expected, "a row of %d numbers [t, %s, theta]", n,
+           dim == 2 ? "dx, dy" : "dx, dy, dz");
+  w->n_rows = seq->n;
+  for (int i = 0; i < seq->n; i++) {
+    join_index(ipath, path, i);
+    if (vec_of(m->ld, seq->entries[i].value, ipath, n, expected, row)) return 1;
+    double *t = w->table[i];
+    t[0] = row[0], t[1] = row[1], t[2] = row[2], t[3] = dim == 3 ? row[3] : 0, t[4] = row[n - 1];
+    if (i > 0 && !(t[0] > w->table[i - 1][0]))
+      return fail(m->ld, seq->entries[i].value, ipath, "got time %g after %g, expected strictly "
+                  "increasing times", t[0], w->table[i - 1][0]);
+  }
+  return 0;
+}
+
+/* A table motion: the table and its rotation centre (default the origin); no law beside it. */
+static int read_table_motion(const struct map *m, struct wall_motion *w) {
+  const struct ynode *law = ytree_get(m->node, "translation") ? ytree_get(m->node, "translation")
+                                                              : ytree_get(m->node, "rotation");
+  if (law)
+    return fail(m->ld, law, m->path, "got a table and a sinusoidal law, expected one of them");
+  return read_table(m, w) || vec(m, "centre", 0, w->centre);
+}
+
+/* The case's geometry is the wall at t = 0: a motion must start there (zero displacement and
+ * angle at t = 0; a sinusoid without a ramp and with sin(phase) != 0 does not). */
+static int check_motion_start(const struct map *m, const struct wall_motion *w) {
+  struct frame f;
+  motion_frame(w, 0.0, &f);
+  double d0 = sqrt(f.d[0] * f.d[0] + f.d[1] * f.d[1] + f.d[2] * f.d[2]);
+  if (d0 <= 1e-12 && fabs(f.theta) <= 1e-12) return 0;
+  return fail(m->ld, m->node, m->path, "starts displaced (|d(0)| = %g m, theta(0) = %g rad), "
+              "expected zero displacement and angle at t = 0: the walls of the case are their "
+              "place at t = 0 (use a ramp, a phase of 0 or pi, or a table whose first row is zero)",
+              d0, f.theta);
+}
+
+/* The prescribed motion of a wall (absent: the wall is fixed). */
+static int read_motion(const struct map *wall, struct wall *w) {
+  struct map m, translation, rotation;
+  char path[PATH_LEN];
+  if (sub(wall, "motion", MOTION_KEYS, &m)) return 1;
+  w->moving = m.node != NULL;
+  if (!w->moving) return 0;
+  if (ytree_get(m.node, "table")) return read_table_motion(&m, &w->motion) || check_motion_start(&m, &w->motion);
+  const struct ynode *centre = get(&m, "centre", path);
+  if (centre)
+    return fail(m.ld, centre, path, "got a centre without a table, expected rotation.centre for a "
+                "rotation law (motion.centre is the table's rotation centre)");
+  return read_law(&m, "translation", TRANSLATION_KEYS, 1, &w->motion.translation, &translation) ||
+         read_law(&m, "rotation", ROTATION_KEYS, 0, &w->motion.rotation, &rotation) ||
+         (w->motion.rotation.active && vec(&rotation, "centre", 1, w->motion.centre)) ||
+         check_motion_start(&m, &w->motion);
+}
+
+static int read_wall(const struct map *m, struct case_def *c, int i) {
+  struct wall *w = &c->walls[i];
+  int slip, side;
+  if (shape(m, &w->shape) || choice(m, "slip", SLIP_NAMES, SLIP_FREE, &slip) ||
+      choice(m, "fluid_side", SIDE_NAMES, FLUID_INSIDE, &side) || read_motion(m, w))
+    return 1;
+  w->slip = (enum slip_kind)slip;
+  w->fluid_side = (enum fluid_side)side;
+  return 0;
+}
+
+/* The keys of a probe item each kind reads (name and kind aside). */
+static const char *const PROBE_KIND_KEYS[][5] = {
+    {"position", "diameter", "axis", "interpolation", NULL},   /* pressure */
+    {"position", "phase", NULL},                               /* elevation */
+    {"phase", NULL}};                                          /* integral */
+
+/* Every key of probe item m is one its kind reads. */
+static int probe_keys(const struct map *m, enum probe_kind kind) {
+  for (int i = 0; i < m->node->n; i++) {
+    const struct yentry *e = &m->node->entries[i];
+    int known = strcmp(e->key, "name") == 0 || strcmp(e->key, "kind") == 0;
+    for (int k = 0; PROBE_KIND_KEYS[kind][k]; k++) known |= strcmp(e->key, PROBE_KIND_KEYS[kind][k]) == 0;
+    if (known) continue;
+    char path[PATH_LEN], names[LIST_LEN];
+    join(path, m->path, e->key);
+    return fail_at(m->ld, e->value->source, e->key_line, path, "not a key of kind %s, its keys: "
+                   "name, kind, %s", PROBE_KIND_NAMES[kind], names_list(PROBE_KIND_KEYS[kind], names));
+  }
+  return 0;
+}
+
+/* The face of a pressure sensor: diameter (0, a point, by default) and, when above 0 (2D
+ * only), the direction axis of the segment (any length but 0); both ends inside the domain. */
+static int sensor_face(const struct map *m, struct probe *p, const struct case_def *c) {
+  char path[PATH_LEN];
+  double len = 0, lo[3], hi[3];
+  if (num(m, "diameter", &R_NONNEGATIVE, 0, &p->diameter)) return 1;
+  const struct ynode *axis = get(m, "axis", path);
+  if (p->diameter == 0 && axis)
+    return fail(m->ld, axis, path, "got an axis for a point sensor, expected it only with a diameter > 0");
+  if (p->diameter == 0) return 0;
+  if (m->ld->dim != 2)
+    return fail(m->ld, get(m, "diameter", path), path, "got a diameter in 3D, expected 0 "
+                "(segment sensors are 2D only)");
+  if (vec(m, "axis", 1, p->axis)) return 1;
+  for (int d = 0; d < 2; d++) len += p->axis[d] * p->axis[d];
+  if (len == 0 || !isfinite(len)) return fail(m->ld, axis, path, "got a zero or overflowing vector, expected a direction of finite length");
+  for (int d = 0; d < 2; d++) {   /* the axis stays as given (the round trip); its unit vector: */
+    lo[d] = p->position[d] - 0.5 * p->diameter * p->axis[d] / sqrt(len);
+    hi[d] = p->position[d] + 0.5 * p->diameter * p->axis[d] / sqrt(len);
+  }
+  return inside(m, "diameter", lo, lo, c) || inside(m, "diameter", hi, hi, c);
+}
+
+/* A wave gauge needs a vertical: gravity not zero. */
+static int gravity_axis(const struct map *m, const struct case_def *c) {
+  char path[PATH_LEN];
+  for (int d = 0; d < c->dimension; d++)
+    if (c->gravity[d] != 0) return 0;
+  return fail(m->ld, get(m, "kind", path), path, "got an elevation probe with zero gravity, expected "
+              "a gravity (its direction is the gauge's vertical)");
+}
+
+/* The keys of probe p of the kind read. */
+static int probe_body(const struct map *m, struct probe *p, const struct case_def *c) {
+  int interp;
+  if (probe_keys(m, p->kind)) return 1;
+  if (p->kind == PROBE_INTEGRAL) return phase_index(m, c, &p->phase);
+  if (vec(m, "position", 1, p->position) || inside(m, "position", p->position, p->position, c))
+    return 1;
+  if (p->kind == PROBE_ELEVATION) return phase_index(m, c, &p->phase) || gravity_axis(m, c);
+  if (choice(m, "interpolation", INTERP_NAMES, INTERP_SHEPARD, &interp)) return 1;
+  p->interpolation = (enum probe_interpolation)interp;
+  return sensor_face(m, p, c);
+}
+
+/* The probes.csv columns of probe i differ from those of the earlier probes. */
+static int unique_columns(const struct map *m, const struct case_def *c, int i) {
+  char a[2 * CASE_MAX_NAME], b[2 * CASE_MAX_NAME], path[PATH_LEN];
+  for (int k = 0; k < case_probe_column(c, i, 0, NULL, 0); k++)
+    for (int j = 0; j < i; j++)
+      for (int l = 0; l < case_probe_column(c, j, 0, NULL, 0); l++) {
+        case_probe_column(c, i, k, a, sizeof a);
+        case_probe_column(c, j, l, b, sizeof b);
+        if (strcmp(a, b) == 0)
+          return fail(m->ld, get(m, "name", path), path, "gives the probes.csv column '%s' of "
+                      "probe %d a second time, expected unique columns", a, j);
+      }
+  return 0;
+}
+
+static int read_probe(const struct map *m, struct case_def *c, int i) {
+  struct probe *p = &c->probes[i];
+  int kind;
+  if (text(m, "name", PROBE_PUNCT, NULL, sizeof p->name, p->name) ||
+      unique_name(m, c->probes[0].name, sizeof c->probes[0], i) ||
+      choice(m, "kind", PROBE_KIND_NAMES, PROBE_PRESSURE, &kind))
+    return 1;
+  p->kind = (enum probe_kind)kind;
+  return probe_body(m, p, c) || unique_columns(m, c, i);
+}
+
+static int read_top(struct map *m, struct case_def *c) {
+  double dim;
+  int scheme, kernel;
+  if (text(m, "name", NAME_PUNCT, NULL, sizeof c->name, c->name) ||
+      text(m, "description", NULL, "", sizeof c->description, c->description) ||
+      num(m, "dimension", &R_DIMENSION, REQUIRED, &dim) ||
+      choice(m, "scheme", SCHEME_NAMES, SCHEME_DELTA_PLUS, &scheme) ||
+      choice(m, "kernel", KERNEL_NAMES, KERNEL_GAUSSIAN, &kernel))
+    return 1;
+  c->dimension = m->ld->dim = (int)dim;
+  c->scheme = (enum scheme_kind)scheme;
+  c->kernel = (enum kernel_kind)kernel;
+  struct map pot;
+  return vec(m, "gravity", 0, c->gravity) || sub(m, "potential", POTENTIAL_KEYS, &pot) ||
+         num(&pot, "omega", &R_NONNEGATIVE, 0, &c->potential_omega) ||
+         vec(&pot, "centre", 0, c->potential_centre);
+}
+
+/* resolution.origin: the common lattice origin of the fluid regions (absent: each region's
+ * lattice is anchored at its shape's lower corner). */
+static int read_lattice_origin(const struct map *r, struct case_def *c) {
+  char path[PATH_LEN];
+  c->has_lattice_origin = get(r, "origin", path) != NULL;
+  return vec(r, "origin", 0, c->lattice_origin);
+}
+
+static int read_run(const struct map *root, struct case_def *c) {
+  struct map r, t, o;
+  int gd = c->scheme == SCHEME_GENERALIZED_DISSIPATION;   /* paper 004: h = 1.1 dx, dt 0.25 h/(c + |u|) */
+  double h_default = c->kernel == KERNEL_GAUSSIAN ? (gd ? 1.1 : 1.33) : 2.0;
+  return sub(root, "resolution", RESOLUTION_KEYS, &r) ||
+         num(&r, "dx", &R_POSITIVE, REQUIRED, &c->dx) ||
+         num(&r, "h_over_dx", &R_H_OVER_DX, h_default, &c->h_over_dx) ||
+         read_lattice_origin(&r, c) ||
+         sub(root, "time", TIME_KEYS, &t) || num(&t, "end", &R_POSITIVE, REQUIRED, &c->t_end) ||
+         num(&t, "cfl", &R_CFL, gd ? 0.25 : 1.0, &c->cfl) ||
+         lnum(&t, "max_steps", &R_COUNT, 0, &c->max_steps) ||
+         sub(root, "output", OUTPUT_KEYS, &o) ||
+         num(&o, "interval", &R_NONNEGATIVE, 0, &c->output_interval) ||
+         num(&o, "stats_interval", &R_POSITIVE, c->t_end / 100, &c->stats_interval) ||
+         num(&o, "probes_interval", &R_POSITIVE, c->stats_interval, &c->probes_interval) ||
+         num(&o, "progress_interval", &R_POSITIVE, 10, &c->progress_interval) ||
+         num(&o, "checkpoint_interval", &R_NONNEGATIVE, 0, &c->checkpoint_interval);
+}
+
+static int read_contents(const struct map *root, struct case_def *c) {
+  struct map d;
+  return sub(root, "domain", BOX_KEYS, &d) || corners(&d, c->domain_min, c->domain_max) ||
+         read_list(root, "phases", 1, CASE_MAX_PHASES, "phases", PHASE_KEYS, read_phase, c,
+                   &c->n_phases) ||
+         read_list(root, "fluids", 0, CASE_MAX_REGIONS, "fluid regions", FLUID_KEYS, read_fluid,
+                   c, &c->n_fluids) ||
+         read_list(root, "walls", 0, CASE_MAX_WALLS, "walls", WALL_KEYS, read_wall, c,
+                   &c->n_walls) ||
+         read_list(root, "probes", 0, CASE_MAX_PROBES, "probes", PROBE_KEYS, read_probe, c,
+                   &c->n_probes);
+}
+
+/* Default maximum expected velocity: the c0 = 10 U_max rule of paper 000 read backwards, from
+ * the largest sound speed of the liquids (of all phases when there is no liquid). */
+static double default_u_max(const struct case_def *c) {
+  double c_liquid = 0, c_any = 0;
+  for (int i = 0; i < c->n_phases; i++) {
+    c_any = fmax(c_any, c->phases[i].c0);
+    if (c->phases[i].incompressible) c_liquid = fmax(c_liquid, c->phases[i].c0);
+  }
+  return (c_liquid > 0 ? c_liquid : c_any) / 10.0;
+}
+
+static int read_physics(const struct map *root, struct case_def *c) {
+  struct map ph;
+  int shifting, tic, fs, form, limit, iface_p, iface_visc, spc_model, diss;
+  int plus = c->scheme == SCHEME_DELTA_PLUS;   /* the others: no shifting, TIC or damper (papers 001-004) */
+  int gd = c->scheme == SCHEME_GENERALIZED_DISSIPATION;   /* paper 004: delta 0.5, physical viscosity only */
+  int spc = c->scheme == SCHEME_SAME_PHASE_CONTINUITY;     /* paper 003: alpha_w = 0.05 */
+  /* viscosity harmonic across the phases (004 Eq. 10, 002 Eqs. 6-9, 003 Eq. 21) */
+  int coupled = gd || spc || c->scheme == SCHEME_RIEMANN;
+  double mode;
+  if (sub(root, "physics", PHYSICS_KEYS, &ph) ||
+      num(&ph, "delta", &R_NONNEGATIVE, gd ? 0.5 : 0.1, &c->delta) ||
+      num(&ph, "artificial_viscosity", &R_NONNEGATIVE, gd ? 0.0 : spc ? 0.05 : 0.1, &c->alpha) ||
+      num(&ph, "acoustic_damper", &R_NONNEGATIVE, plus ? 10 : 0, &c->acoustic_damper) ||
+      choice(&ph, "shifting", SHIFTING_NAMES, plus ? SHIFTING_CONSISTENT : SHIFTING_NONE, &shifting) ||
+      num(&ph, "u_max", &R_POSITIVE, default_u_max(c), &c->u_max) ||
+      choice(&ph, "tensile_control", BOOL_NAMES, plus, &tic) ||
+      choice(&ph, "free_surface", FREE_SURFACE_NAMES, FREE_SURFACE_AUTO, &fs) ||
+      num(&ph, "surface_band", &R_NONNEGATIVE, 2.0, &c->surface_band) ||
+      num(&ph, "interface_mode", &R_MODE, 4, &mode) ||
+      choice(&ph, "damper_form", DAMPER_NAMES, DAMPER_SYMMETRIC, &form) ||
+      num(&ph, "interface_sharpness", &R_NONNEGATIVE, 0, &c->interface_sharpness) ||
+      choice(&ph, "limit_surface_shifting", BOOL_NAMES, 0, &limit) ||
+      choice(&ph, "interface_pressure", IFACE_P_NAMES, IFACE_P_SUM, &iface_p) ||
+      choice(&ph, "interface_viscosity", IFACE_VISC_NAMES, coupled ? IFACE_VISC_HARMONIC : IFACE_VISC_NONE, &iface_visc) ||
+      num(&ph, "surface_tension", &R_NONNEGATIVE, 0, &c->surface_tension) ||
+      num(&ph, "wall_guard", &R_NONNEGATIVE, WALL_GUARD_DX, &c->wall_guard) ||
+      choice(&ph, "spc_model", SPC_MODEL_NAMES, SPC_PRESENT, &spc_model) ||
+      choice(&ph, "dissipation_form", DISSIPATION_NAMES, DISSIPATION_CONSISTENT, &diss))
+    return 1;
+  c->dissipation_form = (enum dissipation_form)diss;
+  c->shifting = (enum shifting_kind)shifting;
+  c->tensile_control = tic;
+  c->free_surface = (enum free_surface_mode)fs;
+  c->interface_mode = (int)mode;
+  c->damper_form = (enum damper_form)form;
+  c->limit_surface_shifting = limit;
+  c->interface_pressure = (enum interface_pressure)iface_p;
+  c->interface_viscosity = (enum interface_viscosity)iface_visc;
+  c->spc_model = (enum spc_model)spc_model;
+  return 0;
+}
+
+/* time.dt_min, read after the phases: its default is a fraction of the acoustic step. */
+static int read_dt_min(const struct map *root, struct case_def *c) {
+  struct map t;
+  double c_max = 0;
+  for (int i = 0; i < c->n_phases; i++) c_max = fmax(c_max, c->phases[i].c0);
+  return sub(root, "time", TIME_KEYS, &t) ||
+         num(&t, "dt_min", &R_POSITIVE, DT_MIN_FRACTION * c->cfl * c->h_over_dx * c->dx / c_max,
+             &c->dt_min);
+}
+
+static int read_options(const struct map *root, struct case_def *c) {
+  struct map in, pa;
+  int pressure;
+  if (read_dt_min(root, c) || read_physics(root, c) || sub(root, "initial", INITIAL_KEYS, &in) ||
+      choice(&in, "pressure", PRESSURE_NAMES, INIT_PRESSURE_HYDROSTATIC, &pressure) ||
+      sub(root, "parallel", PARALLEL_KEYS, &pa) ||
+      num(&pa, "repartition_threshold", &R_POSITIVE, 0.1, &c->repartition_threshold) ||
+      lnum(&pa, "repartition_every", &R_COUNT, 0, &c->repartition_every))
+    return 1;
+  c->initial_pressure = (enum init_pressure)pressure;
+  return 0;
+}
+
+static int read_case(const struct ynode *root, struct case_def *c, char *err, size_t err_len) {
+  struct ld ld = {err, err_len, 2};
+  struct map m;
+  return open_map(&ld, root, root, "", ROOT_KEYS, &m) || read_top(&m, c) || read_run(&m, c) ||
+         read_contents(&m, c) || read_options(&m, c);
+}
+
+/* Rewrite the message in err on one printable line: control characters (a newline inside a
+ * value or key shown in it) become \n, \t or \xNN; the end is cut at err_len. */
+static void one_line(char *err, size_t err_len) {
+  char buf[4096];
+  size_t k = 0;
+  for (const unsigned char *c = (const unsigned char *)err; *c && k + 5 < sizeof buf; c++) {
+    if (*c >= 0x20 && *c != 0x7f)
+      buf[k++] = (char)*c;
+    else
+      k += (size_t)snprintf(buf + k, 5, *c == '\n' ? "\\n" : *c == '\t' ? "\\t" : "\\x%02x", *c);
+  }
+  buf[k] = '\0';
+  snprintf(err, err_len, "%s", buf);
+}
+
+/* Load, override, validate and resolve the case text into c. */
+int case_load_string(const char *text, size_t len, const char *source, int n_sets,
+                     char *const *sets, struct case_def *c, char *err, size_t err_len) {
+  memset(c, 0, sizeof *c);
+  if (strlen(source) >= sizeof c->source_file) {
+    if (err_len) snprintf(err, err_len, "%s: path too long, expected at most %zu characters",
+                          source, sizeof c->source_file - 1);
+    return 1;
+  }
+  snprintf(c->source_file, sizeof c->source_file, "%s", source);
+  struct ynode *root = ytree_parse(text, len, source, 0, err, err_len);
+  int rc = root ? 0 : 1;
+  for (int i = 0; rc == 0 && i < n_sets; i++) rc = ytree_set(root, sets[i], i + 1, err, err_len);
+  if (rc == 0) rc = read_case(root, c, err, err_len);
+  ytree_free(root);
+  if (rc && err_len) one_line(err, err_len);
+  return rc;
+}
+
+/* What a file of mode st_mode is when it is not a regular file ("a directory"), or NULL. */
+static const char *not_regular(mode_t mode) {
+  return S_ISREG(mode) ? NULL : S_ISDIR(mode) ? "a directory" : S_ISFIFO(mode) ? "a FIFO (named pipe)"
+         : S_ISCHR(mode) ? "a character device" : S_ISBLK(mode) ? "a block device"
+         : S_ISSOCK(mode) ? "a socket" : "not a regular file";
+}
+
+const char *case_file_not_regular(const char *path) {
+  struct stat st;
+  return stat(path, &st) == 0 ? not_regular(st.st_mode) : NULL;
+}
+
+/* The regular file at path opened for reading, or NULL with a message. Its type is asked before
+ * it is opened, and again of the open file (which may have been replaced in between): opening a
+ * FIFO would wait for a writer, reading a device might never end. */
+static FILE *open_regular(const char *path, char *err, size_t err_len) {
+  struct stat st;
+  const char *kind = NULL;
+  int fd = -1;
+  if (stat(path, &st) == 0 && !(kind = not_regular(st.st_mode)) &&
+      (fd = open(path, O_RDONLY | O_NONBLOCK | O_CLOEXEC)) >= 0 && fstat(fd, &st) == 0)
+    kind = not_regular(st.st_mode);
+  FILE *f = fd >= 0 && !kind ? fdopen(fd, "rb") : NULL;
+  if (f) return f;
+  if (kind) snprintf(err, err_len, "%s: cannot read the file: it is %s, expected a regular file", path, kind);
+  else snprintf(err, err_len, "%s: cannot open the file: %s", path, strerror(errno));
+  if (fd >= 0) close(fd);
+  return NULL;
+}
+
+/* The whole file at path (at most CASE_MAX_FILE_BYTES) in a new buffer, its size in *len; NULL
+ * with a message on failure. */
+static char *read_file(const char *path, size_t *len, char *err, size_t err_len) {
+  FILE *f = open_regular(path, err, err_len);
+  if (!f) return NULL;
+  char *text = mem_alloc(CASE_MAX_FILE_BYTES + 1, "the case file's text");
+  *len = fread(text, 1, CASE_MAX_FILE_BYTES + 1, f);
+  if (ferror(f))
+    snprintf(err, err_len, "%s: cannot read the file: %s", path, strerror(errno));
+  else if (*len > CASE_MAX_FILE_BYTES)
+    snprintf(err, err_len, "%s: larger than %d bytes, expected a case file of at most that size",
+             path, CASE_MAX_FILE_BYTES);
+  int ok = !ferror(f) && *len <= CASE_MAX_FILE_BYTES;
+  fclose(f);
+  if (ok) return text;
+  free(text);
+  return NULL;
+}
+
+/* Load, override, validate and resolve a case file into c. */
+int case_load(const char *path, int n_sets, char *const *sets, struct case_def *c, char *err,
+              size_t err_len) {
+  size_t len = 0;
+  char *text = read_file(path, &len, err, err_len);
+  memset(c, 0, sizeof *c);
+  if (!text && err_len) one_line(err, err_len);
+  if (!text) return 1;
+  int rc = case_load_string(text, len, path, n_sets, sets, c, err, err_len);
+  free(text);
+  return rc;
+}
+
+/* Column suffixes of an integral probe. */
+static const char *const INTEGRAL_COLUMNS[] = {"volume", "kinetic", "potential", "com_x", "com_y", "com_z"};
+
+int case_probe_column(const struct case_def *c, int k, int col, char *buf, size_t len) {
+  const struct probe *p = &c->probes[k];
+  int n = p->kind == PROBE_INTEGRAL ? 3 + c->dimension : 1;
+  if (buf && p->kind == PROBE_INTEGRAL) snprintf(buf, len, "%s_%s", p->name, INTEGRAL_COLUMNS[col]);
+  else if (buf) snprintf(buf, len, "%s", p->name);
+  return n;
+}
+
+/* ---- writing ---- */
+
+/* The shortest of %.15g, %.16g, %.17g that reads back as x exactly. */
+static const char *fmt_num(char *buf, size_t len, double x) {
+  for (int digits = 15; digits <= 17; digits++) {
+    snprintf(buf, len, "%.*g", digits, x);
+    if (strtod(buf, NULL) == x) break;
+  }
+  return buf;
+}
+
+static void put_num(FILE *f, const char *indent, const char *key, double x) {
+  char buf[32];
+  fprintf(f, "%s%s: %s\n", indent, key, fmt_num(buf, sizeof buf, x));
+}
+
+static void put_word(FILE *f, const char *indent, const char *key, const char *word) {
+  fprintf(f, "%s%s: %s\n", indent, key, word);
+}
+
+static void put_long(FILE *f, const char *indent, const char *key, long x) {
+  fprintf(f, "%s%s: %ld\n", indent, key, x);
+}
+
+static void put_flow_vec(FILE *f, const double *v, int n) {
+  char buf[32];
+  fputc('[', f);
+  for (int i = 0; i < n; i++) fprintf(f, "%s%s", i ? ", " : "", fmt_num(buf, sizeof buf, v[i]));
+  fputc(']', f);
+}
+
+static void put_vec(FILE *f, const char *indent, const char *key, const double *v, int n) {
+  fprintf(f, "%s%s: ", indent, key);
+  put_flow_vec(f, v, n);
+  fputc('\n', f);
+}
+
+/* A fluid region's interface mode, when it has one. */
+static void put_velocity_mode(FILE *f, const struct velocity_mode *mode) {
+  if (!mode->active) return;
+  fputs("    velocity_mode:\n", f);
+  put_num(f, "      ", "amplitude", mode->amplitude);
+  put_num(f, "      ", "wavelength", mode->wavelength);
+  put_num(f, "      ", "interface", mode->interface);
+}
+
+/* The code point of the UTF-8 sequence at s and its length in *n; a malformed sequence reads as
+ * the one byte U+FFFD. */
+static unsigned long utf8_at(const unsigned char *s, int *n) {
+  *n = s[0] < 0xc0 ? 1 : s[0] < 0xe0 ? 2 : s[0] < 0xf0 ? 3 : 4;
+  if (*n == 1) return s[0] < 0x80 ? s[0] : 0xfffd;
+  unsigned long cp = s[0] & (0x7fu >> *n);
+  for (int i = 1; i < *n; i++) {
+    if ((s[i] & 0xc0) != 0x80) return *n = 1, 0xfffd;
+    cp = (cp << 6) | (s[i] & 0x3fu);
+  }
+  return cp;
+}
+
+/* 1 if a double-quoted YAML scalar may hold code point cp as it is: printable, not a quote, a
+ * backslash or a line break (NEL, LS and PS would fold into spaces when read again). */
+static int yaml_verbatim(unsigned long cp) {
+  if (cp == '"' || cp == '\\') return 0;
+  return (cp >= 0x20 && cp <= 0x7e) || (cp >= 0xa0 && cp <= 0xd7ff && cp != 0x2028 && cp != 0x2029) ||
+         (cp >= 0xe000 && cp <= 0xfffd && cp != 0xfeff) || (cp >= 0x10000 && cp <= 0x10ffff);
+}
+
+/* A double-quoted YAML string; characters it may not hold as they are are escaped. */
+static void put_str(FILE *f, const char *indent, const char *key, const char *s) {
+  fprintf(f, "%s%s: \"", indent, key);
+  const unsigned char *c = (const unsigned char *)s;
+  for (int n; *c; c += n) {
+    unsigned long cp = utf8_at(c, &n);
+    if (yaml_verbatim(cp))
+      fwrite(c, 1, (size_t)n, f);
+    else if (cp == '"' || cp == '\\')
+      fprintf(f, "\\%c", (int)cp);
+    else
+      fprintf(f, cp < 0x100 ? "\\x%02lx" : cp < 0x10000 ? "\\u%04lx" : "\\U%08lx", cp);
+  }
+  fputs("\"\n", f);
+}
+
+/* A shape key at indent, its mapping entries at inner. */
+static void put_shape(FILE *f, const char *indent, const char *inner, const struct shape *s,
+                      int dim) {
+  fprintf(f, "%s%s:", indent, SHAPE_NAMES[s->kind]);
+  if (s->kind == SHAPE_POLYGON) {
+    fputs(" [", f);
+    for (int i = 0; i < s->n_vertices; i++) {
+      fputs(i ? ", " : "", f);
+      put_flow_vec(f, s->vertex[i], 2);
+    }
+    fputs("]\n", f);
+    return;
+  }
+  fputc('\n', f);
+  put_vec(f, inner, s->kind == SHAPE_BOX ? "min" : "centre", s->kind == SHAPE_BOX ? s->min :
+          s->centre, dim);
+  if (s->kind == SHAPE_BOX) {
+    put_vec(f, inner, "max", s->max, dim);
+  } else {
+    put_num(f, inner, "radius", s->radius);
+    put_num(f, inner, "inner_radius", s->inner_radius);
+  }
+}
+
+static void put_list_key(FILE *f, const char *key, int n) {
+  fprintf(f, "%s:%s\n", key, n ? "" : " []");
+}
+
+static void put_head(FILE *f, const struct case_def *c) {
+  int dim = c->dimension;
+  put_str(f, "", "name", c->name);
+  put_str(f, "", "description", c->description);
+  put_long(f, "", "dimension", dim);
+  put_word(f, "", "scheme", SCHEME_NAMES[c->scheme]);
+  put_word(f, "", "kernel", KERNEL_NAMES[c->kernel]);
+  fputs("resolution:\n", f);
+  put_num(f, "  ", "dx", c->dx);
+  put_num(f, "  ", "h_over_dx", c->h_over_dx);
+  if (c->has_lattice_origin) put_vec(f, "  ", "origin", c->lattice_origin, dim);
+  put_vec(f, "", "gravity", c->gravity, dim);
+  fputs("potential:\n", f);
+  put_num(f, "  ", "omega", c->potential_omega);
+  put_vec(f, "  ", "centre", c->potential_centre, dim);
+  fputs("time:\n", f);
+  put_num(f, "  ", "end", c->t_end);
+  put_num(f, "  ", "cfl", c->cfl);
+  put_long(f, "  ", "max_steps", c->max_steps);
+  put_num(f, "  ", "dt_min", c->dt_min);
+  fputs("output:\n", f);
+  put_num(f, "  ", "interval", c->output_interval);
+  put_num(f, "  ", "stats_interval", c->stats_interval);
+  put_num(f, "  ", "probes_interval", c->probes_interval);
+  put_num(f, "  ", "progress_interval", c->progress_interval);
+  put_num(f, "  ", "checkpoint_interval", c->checkpoint_interval);
+  fputs("domain:\n", f);
+  put_vec(f, "  ", "min", c->domain_min, dim);
+  put_vec(f, "  ", "max", c->domain_max, dim);
+}
+
+/* One motion law under key (nothing when inactive). */
+static void put_law(FILE *f, const char *key, const struct motion_law *l, int vector, int dim) {
+  if (!l->active) return;
+  fprintf(f, "      %s:\n", key);
+  if (vector) put_vec(f, "        ", "amplitude", l->amplitude, dim);
+  else put_num(f, "        ", "amplitude", l->amplitude[0]);
+  put_num(f, "        ", "period", l->period);
+  put_num(f, "        ", "phase", l->phase);
+  fputs("        ramp:\n", f);
+  put_word(f, "          ", "shape", RAMP_NAMES[l->ramp]);
+  put_num(f, "          ", "time", l->ramp_time);
+}
+
+/* The rows of a motion table, one flow list per line. */
+static void put_table(FILE *f, const struct wall_motion *m, int dim) {
+  fputs("      table:\n", f);
+  for (int i = 0; i < m->n_rows; i++) {
+    double row[MOTION_TABLE_COLUMNS] = {m->table[i][0], m->table[i][1], m->table[i][2]};
+    row[3] = dim == 3 ? m->table[i][3] : m->table[i][4];
+    row[4] = m->table[i][4];
+    fputs("        - ", f);
+    put_flow_vec(f, row, dim + 2);
+    fputc('\n', f);
+  }
+  put_vec(f, "      ", "centre", m->centre, dim);
+}
+
+static void put_motion(FILE *f, const struct wall_motion *m, int dim) {
+  fputs("    motion:\n", f);
+  if (m->n_rows > 0) {
+    put_table(f, m, dim);
+    return;
+  }
+  put_law(f, "translation", &m->translation, 1, dim);
+  put_law(f, "rotation", &m->rotation, 0, dim);
+  if (m->rotation.active) put_vec(f, "        ", "centre", m->centre, dim);
+}
+
+static void put_bodies(FILE *f, const struct case_def *c) {
+  put_list_key(f, "phases", c->n_phases);
+  for (int i = 0; i < c->n_phases; i++) {
+    const struct phase *p = &c->phases[i];
+    put_str(f, "  - ", "name", p->name);
+    put_num(f, "    ", "rho0", p->rho0);
+    put_num(f, "    ", "c0", p->c0);
+    put_num(f, "    ", "gamma", p->gamma);
+    put_num(f, "    ", "p_background", p->p_background);
+    put_num(f, "    ", "viscosity", p->viscosity);
+    put_word(f, "    ", "incompressible", BOOL_NAMES[p->incompressible != 0]);
+    put_vec(f, "    ", "density_band", p->density_band, 2);
+  }
+  put_list_key(f, "fluids", c->n_fluids);
+  for (int i = 0; i < c->n_fluids; i++) {
+    put_str(f, "  - ", "phase", c->phases[c->fluids[i].phase].name);
+    put_shape(f, "    ", "      ", &c->fluids[i].shape, c->dimension);
+    put_vec(f, "    ", "velocity", c->fluids[i].velocity, c->dimension);
+    fputs("    velocity_gradient: [", f);
+    for (int a = 0; a < c->dimension; a++) {
+      fputs(a ? ", " : "", f);
+      put_flow_vec(f, c->fluids[i].velocity_gradient[a], c->dimension);
+    }
+    fputs("]\n", f);
+    put_velocity_mode(f, &c->fluids[i].mode);
+  }
+  put_list_key(f, "walls", c->n_walls);
+  for (int i = 0; i < c->n_walls; i++) {
+    put_shape(f, "  - ", "      ", &c->walls[i].shape, c->dimension);
+    put_word(f, "    ", "slip", SLIP_NAMES[c->walls[i].slip]);
+    put_word(f, "    ", "fluid_side", SIDE_NAMES[c->walls[i].fluid_side]);
+    if (c->walls[i].moving) put_motion(f, &c->walls[i].motion, c->dimension);
+  }
+}
+
+/* The keys of one probe after its name. */
+static void put_probe(FILE *f, const struct probe *p, const struct case_def *c) {
+  put_word(f, "    ", "kind", PROBE_KIND_NAMES[p->kind]);
+  if (p->kind != PROBE_INTEGRAL) put_vec(f, "    ", "position", p->position, c->dimension);
+  if (p->kind != PROBE_PRESSURE) {
+    put_str(f, "    ", "phase", c->phases[p->phase].name);
+    return;
+  }
+  put_word(f, "    ", "interpolation", INTERP_NAMES[p->interpolation]);
+  put_num(f, "    ", "diameter", p->diameter);
+  if (p->diameter > 0) put_vec(f, "    ", "axis", p->axis, c->dimension);
+}
+
+static void put_tail(FILE *f, const struct case_def *c) {
+  fputs("physics:\n", f);
+  put_num(f, "  ", "delta", c->delta);
+  put_num(f, "  ", "artificial_viscosity", c->alpha);
+  put_num(f, "  ", "acoustic_damper", c->acoustic_damper);
+  put_word(f, "  ", "shifting", SHIFTING_NAMES[c->shifting]);
+  put_num(f, "  ", "u_max", c->u_max);
+  put_word(f, "  ", "tensile_control", BOOL_NAMES[c->tensile_control != 0]);
+  put_word(f, "  ", "free_surface", FREE_SURFACE_NAMES[c->free_surface]);
+  put_num(f, "  ", "surface_band", c->surface_band);
+  put_long(f, "  ", "interface_mode", c->interface_mode);
+  put_word(f, "  ", "damper_form", DAMPER_NAMES[c->damper_form]);
+  put_num(f, "  ", "interface_sharpness", c->interface_sharpness);
+  put_word(f, "  ", "limit_surface_shifting", BOOL_NAMES[c->limit_surface_shifting != 0]);
+  put_word(f, "  ", "interface_pressure", IFACE_P_NAMES[c->interface_pressure]);
+  put_word(f, "  ", "interface_viscosity", IFACE_VISC_NAMES[c->interface_viscosity]);
+  put_num(f, "  ", "surface_tension", c->surface_tension);
+  put_num(f, "  ", "wall_guard", c->wall_guard);
+  put_word(f, "  ", "spc_model", SPC_MODEL_NAMES[c->spc_model]);
+  if (c->scheme == SCHEME_GENERALIZED_DISSIPATION)   /* the other schemes' files stay as they were */
+    put_word(f, "  ", "dissipation_form", DISSIPATION_NAMES[c->dissipation_form]);
+  fputs("initial:\n", f);
+  put_word(f, "  ", "pressure", PRESSURE_NAMES[c->initial_pressure]);
+  put_list_key(f, "probes", c->n_probes);
+  for (int i = 0; i < c->n_probes; i++) {
+    put_str(f, "  - ", "name", c->probes[i].name);
+    put_probe(f, &c->probes[i], c);
+  }
+  fputs("parallel:\n", f);
+  put_num(f, "  ", "repartition_threshold", c->repartition_threshold);
+  put_long(f, "  ", "repartition_every", c->repartition_every);
+}
+
+/* The resolved case as YAML text, every key written; NULL if out of memory. Caller frees. */
+char *case_to_yaml(const struct case_def *c) {
+  char *buf = NULL;
+  size_t size = 0;
+  FILE *f = open_memstream(&buf, &size);
+  if (!f) return NULL;
+  put_head(f, c);
+  put_bodies(f, c);
+  put_tail(f, c);
+  fclose(f);
+  return buf;
+}

@@ -1,0 +1,357 @@
+/* engine.c — set-up of a rank's solver state, the rebuild after each step, load balance and the
+ * time loop. */
+#include <limits.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+#include <unistd.h>
+#include "engine/engine.h"
+#include "io/engine_checkpoint.h"
+#include "case/init.h"
+#include "io/outdir.h"
+#include "parallel/partition.h"
+#include "parallel/redistribute.h"
+#ifdef __GLIBC__
+#include <malloc.h>
+#endif
+#include "engine/signal_stop.h"
+#include "engine/wall_guard.h"
+#include "base/mem.h"
+
+#define BALANCE_CHECK_EVERY 100 /* steps between load-balance checks (the timing window) */
+#define REPARTITION_MIN_GAP 500 /* steps between imbalance-triggered re-partitions */
+#define MIN_MEASURED_SECONDS 0.05  /* compute time below which timings are too noisy to use */
+
+static void report(const struct engine *e, const char *msg) {
+  if (e->rank == 0) fprintf(stderr, "mpsph: %s\n", msg);
+}
+
+/* Work units of a particle: a fluid particle's pair passes cost about four times a ghost's
+ * interpolation. */
+static int particle_work(int phase) { return phase == PHASE_WALL ? 2 : 8; }
+
+/* Work units of this rank's owned particles. */
+static double rank_work(const struct engine *e) {
+  double work = 0;
+  for (long i = 0; i < e->p.n_owned; i++) work += particle_work(e->p.phase[i]);
+  return work;
+}
+
+/* This rank's measured seconds per work unit relative to the mean over ranks (1 when no time has
+ * been measured yet), so that cell weights follow the measured compute time. */
+static double cost_factor(const struct engine *e) {
+  double work = rank_work(e);
+  double rate = work > 0 ? e->t_compute / work : 0, sum;
+  MPI_Allreduce(&rate, &sum, 1, MPI_DOUBLE, MPI_SUM, e->comm);
+  return sum > 0 && rate > 0 ? rate / (sum / e->n_ranks) : 1.0;
+}
+
+/* Vertex weight of each cell from this rank's owned particles scaled by the rank's cost factor,
+ * summed onto rank 0 (plus 1 so that empty cells still count). */
+static int64_t *cell_weights(const struct engine *e) {
+  long n = e->space.grid.n_cells;
+  int64_t *w = mem_calloc(n, sizeof(int64_t), "cell weights");
+  double factor = cost_factor(e);
+  for (long i = 0; i < e->p.n_owned; i++) w[e->p.cell[i]] += particle_work(e->p.phase[i]);
+  for (long c = 0; c < n; c++) w[c] = (int64_t)llround((double)w[c] * factor);
+  if (e->rank == 0) {
+    MPI_Reduce(MPI_IN_PLACE, w, (int)n, MPI_INT64_T, MPI_SUM, 0, e->comm);
+    for (long c = 0; c < n; c++) w[c] += 1;
+  } else {
+    MPI_Reduce(w, NULL, (int)n, MPI_INT64_T, MPI_SUM, 0, e->comm);
+  }
+  return w;
+}
+
+/* Sort owned particles, rebuild the halo and the cell index. */
+static void resort(struct engine *e) {
+  space_sort(&e->space, &e->p, 0, e->p.n_owned);
+  e->p.n_halo = 0;
+  space_index(&e->space, &e->p);   /* the send lists of the halo are read from the owned cells */
+  halo_rebuild(&e->halo, &e->space, &e->p);
+  space_index(&e->space, &e->p);
+  engine_work_reserve(e);
+}
+
+int engine_repartition(struct engine *e) {
+  char err[512];
+  int64_t *w = cell_weights(e);
+  int *owner = mem_calloc(e->space.grid.n_cells, sizeof(int), "cell owners");
+  int status = partition_cells(&e->space.grid, w, e->n_ranks, e->comm, owner, err, sizeof(err));
+  free(w);
+  if (status) {
+    report(e, err);
+    free(owner);
+    return 1;
+  }
+  space_set_owner(&e->space, owner);
+  free(owner);
+  redistribute_parts(&e->space, &e->p, e->comm);
+  halo_build(&e->halo, &e->space, e->comm);
+  resort(e);
+  e->n_repartitions++;
+  e->last_repartition_step = e->step;
+#ifdef __GLIBC__
+  malloc_trim(0);   /* hand the redistribution's freed message buffers back to the system */
+#endif
+  return 0;
+}
+
+void engine_report_particle(const struct engine *e, long i, const char *what) {
+  const struct parts *p = &e->p;
+  char pos[96];
+  if (p->dim == 2) snprintf(pos, sizeof pos, "(%.9g, %.9g)", p->x[0][i], p->x[1][i]);
+  else snprintf(pos, sizeof pos, "(%.9g, %.9g, %.9g)", p->x[0][i], p->x[1][i], p->x[2][i]);
+  char stage[32] = "after the step";
+  if (e->stage >= 0) snprintf(stage, sizeof stage, "RK stage %d", e->stage + 1);
+  fprintf(stderr, "mpsph: unstable at step %ld, t = %.9g s, %s: particle %lld (phase %d) at %s "
+          "with density %.6g kg/m^3, pressure %.6g Pa: %s\n", e->step, e->time, stage,
+          (long long)p->id[i], p->phase[i], pos, p->rho[i], p->p[i], what);
+}
+
+int engine_rebuild(struct engine *e) {
+  double t0 = MPI_Wtime();
+  long bad = space_assign_cells(&e->space, &e->p, 0, e->p.n_owned);
+  if (engine_check_state(e, bad)) return 2;
+  int64_t lost = halo_migrate(&e->halo, &e->space, &e->p);
+  if (lost >= 0) {
+    if (e->rank == 0)
+      fprintf(stderr, "mpsph: unstable at step %ld: particle %lld moved more than a cell in one step\n",
+              e->step, (long long)lost);
+    return 2;
+  }
+  resort(e);
+  e->t_migrate += MPI_Wtime() - t0;
+  return 0;
+}
+
+/* Imbalance (max/mean - 1) of a per-rank quantity. */
+static double rank_imbalance(const struct engine *e, double local) {
+  double max, sum;
+  MPI_Allreduce(&local, &max, 1, MPI_DOUBLE, MPI_MAX, e->comm);
+  MPI_Allreduce(&local, &sum, 1, MPI_DOUBLE, MPI_SUM, e->comm);
+  return sum > 0 ? max / (sum / e->n_ranks) - 1.0 : 0.0;
+}
+
+/* Re-partition when forced by repartition_every, or when the compute time since the last check
+ * (every BALANCE_CHECK_EVERY steps) is imbalanced beyond the case's threshold; while too little
+ * time has been measured to be meaningful, the particle work is used instead. */
+static int balance(struct engine *e) {
+  const struct case_def *c = e->c;
+  if (e->n_ranks == 1) return 0;
+  if (c->repartition_every > 0 && e->step % c->repartition_every == 0) return engine_repartition(e);
+  if (e->step % BALANCE_CHECK_EVERY) return 0;
+  double parts_imb = rank_imbalance(e, rank_work(e)), time_imb = rank_imbalance(e, e->t_compute), t_sum;
+  MPI_Allreduce(&e->t_compute, &t_sum, 1, MPI_DOUBLE, MPI_SUM, e->comm);
+  double imb = t_sum > MIN_MEASURED_SECONDS ? time_imb : parts_imb;
+  int status = 0;
+  if (e->step - e->last_repartition_step >= REPARTITION_MIN_GAP && imb > c->repartition_threshold) {
+    if (e->rank == 0)
+      printf("re-partition at step %ld: particle imbalance %.1f %%, time imbalance %.1f %%\n",
+             e->step, 100 * parts_imb, 100 * time_imb);
+    status = engine_repartition(e);
+  }
+  e->t_compute = 0;
+  return status;
+}
+
+/* Rank 0 locks the output folder for the run (outdir_lock). Returns 0, or 1 on every rank. */
+static int lock_output(struct engine *e) {
+  char err[PATH_MAX + 256];
+  int status = e->rank == 0 ? outdir_lock(e->outdir, &e->lock_fd, err, sizeof err) : 0;
+  if (status) report(e, err);
+  MPI_Bcast(&status, 1, MPI_INT, 0, e->comm);
+  return status;
+}
+
+/* Kernel, grid, halo depth. Returns 0 or 1. */
+static int setup_space(struct engine *e) {
+  const struct case_def *c = e->c;
+  e->h = c->h_over_dx * c->dx;
+  e->vol0 = c->dimension == 2 ? c->dx * c->dx : c->dx * c->dx * c->dx;
+  kernel_init(&e->kern, c->kernel, c->dimension, e->h);
+  struct grid g;
+  if (grid_init(&g, c->dimension, c->domain_min, c->domain_max, e->kern.support * ENGINE_CELL_SKIN)) {
+    report(e, "the domain has too many cells for this resolution (more than 2^31)");
+    return 1;
+  }
+  double edge = g.edge[0];
+  for (int d = 1; d < c->dimension; d++) edge = fmin(edge, g.edge[d]);
+  double thickness = init_wall_layers(c, e->kern.support) * c->dx;
+  int layers = c->n_walls ? 1 + (int)ceil(2 * thickness / edge) : 1;
+  space_init(&e->space, &g, e->rank, e->n_ranks, layers);
+  e->c_max = 0;
+  for (int ph = 0; ph < c->n_phases; ph++) e->c_max = fmax(e->c_max, c->phases[ph].c0);
+  return 0;
+}
+
+/* Generate this rank's share of the initial particles. Returns 0 or 1. */
+static int generate_particles(struct engine *e) {
+  char err[1024];
+  struct init_counts counts;
+  parts_init(&e->p, e->c->dimension, 1024, e->c->n_walls > 0);
+  if (init_particles(e->c, e->kern.support, e->rank, e->n_ranks, &e->p, &counts, err, sizeof(err))) {
+    report(e, err);
+    return 1;
+  }
+  return 0;
+}
+
+/* Locate the particles in their cells and partition the cells among the ranks. Returns 0 or 1. */
+static int distribute_particles(struct engine *e) {
+  long outside = space_assign_cells(&e->space, &e->p, 0, e->p.n_owned);
+  int any = outside >= 0;
+  MPI_Allreduce(MPI_IN_PLACE, &any, 1, MPI_INT, MPI_MAX, e->comm);
+  if (any) {
+    report(e, "a particle lies outside the domain at start-up");
+    return 1;
+  }
+  double n_fluid, n_wall;
+  engine_global_counts(e, &n_fluid, &n_wall);
+  if (e->rank == 0)
+    printf("particles: %.0f fluid, %.0f wall; grid %ld x %ld x %ld cells, halo %d layers, %d ranks\n",
+           n_fluid, n_wall, e->space.grid.n[0], e->space.grid.n[1], e->space.grid.n[2],
+           e->space.halo_layers, e->n_ranks);
+  return engine_repartition(e);
+}
+
+int engine_init(struct engine *e, const struct case_def *c, const char *outdir,
+                const char *restart, MPI_Comm comm) {
+  memset(e, 0, sizeof(*e));
+  e->c = c;
+  e->comm = comm;
+  e->outdir = outdir;
+  e->restarted = restart != NULL;
+  e->lock_fd = -1;
+  MPI_Comm_rank(comm, &e->rank);
+  MPI_Comm_size(comm, &e->n_ranks);
+  e->wall_start = MPI_Wtime();
+  e->last_snapshot_step = e->last_stats_step = e->last_probes_step = -1;
+  e->next_checkpoint = c->checkpoint_interval;
+  if (setup_space(e)) return 1;
+  int status = restart ? engine_checkpoint_read(e, restart) : generate_particles(e);
+  if (status) return status;
+  engine_assemble(e);
+  if (distribute_particles(e)) return 1;
+  e->n_repartitions = 0;
+  engine_print_pipeline(e);
+  /* not before: bad input found in the set-up creates no folder */
+  return lock_output(e) ? 1 : engine_open_output(e);
+}
+
+/* Free the free-surface work arrays (region, flags, eigenvalues, normals) and clear them. */
+static void free_surface_arrays(struct work *w) {
+  free(w->surface);
+  free(w->region);
+  free(w->lambda);
+  w->surface = w->region = w->lambda = NULL;
+  for (int d = 0; d < 3; d++) {
+    free(w->normal[d]);
+    w->normal[d] = NULL;
+  }
+}
+
+/* free_surface: auto — after the first step, switch detection off if no particle was found on a
+ * free surface at t = 0 (a closed tank full of fluid), and drop its passes and arrays. */
+static void free_surface_auto(struct engine *e) {
+  long n = e->n_surface;
+  if (e->c->free_surface != FREE_SURFACE_AUTO || !(e->features & FEAT_SURFACE)) return;
+  MPI_Allreduce(MPI_IN_PLACE, &n, 1, MPI_LONG, MPI_SUM, e->comm);
+  if (e->rank == 0)
+    printf("free surface: %ld particles detected at t = 0: detection %s\n", n, n ? "kept" : "switched off");
+  if (n) return;
+  e->no_free_surface = 1;
+  free_surface_arrays(&e->w);
+  engine_assemble(e);
+  engine_print_pipeline(e);
+}
+
+/* Print a progress line (rank 0, every output.progress_interval wall seconds); the ETA runs to
+ * whichever of time.end and time.max_steps comes first. */
+static void progress(struct engine *e) {
+  double now = MPI_Wtime();
+  if (e->rank || now < e->next_progress) return;
+  double elapsed = now - e->wall_start, frac = e->time / e->c->t_end;
+  if (e->c->max_steps) frac = fmax(frac, (double)e->step / e->c->max_steps);
+  long n = e->p.n_owned;
+  printf("step %ld  t = %.6g s  dt = %.3g s  %.3g particle-steps/s/rank  ETA %.0f s\n", e->step,
+         e->time, e->dt, n * (double)e->step / elapsed, frac > 0 ? elapsed * (1 - frac) / frac : 0.0);
+  fflush(stdout);
+  e->next_progress = now + e->c->progress_interval;
+}
+
+int engine_finished(const struct engine *e) {
+  return e->time >= e->c->t_end || (e->c->max_steps && e->step >= e->c->max_steps);
+}
+
+/* Rank 0: the run ends here because of a stop signal, or had nothing left to do. */
+static void report_end(const struct engine *e, int signo, long steps) {
+  if (e->rank) return;
+  if (signo)
+    printf("stopped by %s at step %ld, t = %.9g s: the checkpoint is %s/checkpoint.h5; continue "
+           "with the same command and --restart\n", signal_stop_name(signo), e->step, e->time,
+           e->outdir);
+  else if (e->restarted && steps == 0)
+    printf("nothing to run: the checkpoint is at t = %.9g s, step %ld, and the case ends at "
+           "time.end = %g s, time.max_steps = %ld; raise them to continue\n", e->time, e->step,
+           e->c->t_end, e->c->max_steps);
+}
+
+/* Advance one step with everything that follows it: migration, load balance, outputs. */
+static int step_and_output(struct engine *e) {
+  int status = engine_step(e);
+  if (!status) wall_guard_apply(e);
+  if (!status && e->step == 1) free_surface_auto(e);
+  if (!status) status = engine_rebuild(e);
+  if (!status) status = balance(e);
+  if (!status) status = engine_output(e, 0);
+  progress(e);
+  return status;
+}
+
+/* CPU time of this process so far [s]: what the run costs on a machine shared with other jobs. */
+static double process_cpu_seconds(void) {
+  struct timespec t;
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
+
+int engine_run(struct engine *e) {
+  if (!e->restarted) engine_ghosts_now(e);   /* wall sensors and ghost pressures at t = 0 */
+  int status = e->restarted ? 0 : engine_output(e, 1), signo = 0;
+  long first_step = e->step;
+  double loop_start = MPI_Wtime(), cpu_start = process_cpu_seconds();
+  e->next_progress = loop_start + e->c->progress_interval;
+  while (!status && !signo && !engine_finished(e)) {
+    status = step_and_output(e);
+    if (!status) signo = signal_stop_agreed(e->comm);
+  }
+  e->t_steps = MPI_Wtime() - loop_start;
+  e->t_steps_cpu = process_cpu_seconds() - cpu_start;
+  if (status == 2) {
+    report(e, "run stopped: the state became unstable; writing the failing and the last good state");
+    if (engine_write_failure(e)) status = 3;
+  }
+  if (signo && engine_finished(e)) signo = 0;   /* a signal during the last step: a normal end */
+  if (!status && !signo) status = engine_output(e, 1);
+  if (!status) status = engine_checkpoint(e);
+  if (engine_close_output(e) && !status) status = 3;
+  if (!status) report_end(e, signo, e->step - first_step);
+  engine_report(e, e->step - first_step, MPI_Wtime() - loop_start);
+  return status;
+}
+
+void engine_free(struct engine *e) {
+  if (e->lock_fd >= 0) close(e->lock_fd);   /* the output folder's lock ends with the run */
+  e->lock_fd = -1;
+  engine_work_free(&e->w);
+  nlist_free(&e->nl);
+  halo_free(&e->halo);
+  space_free(&e->space);
+  parts_free(&e->p);
+  free(e->case_yaml);
+  free(e->snap_times);
+  free(e->snap_counts);
+  free(e->probe_buf);
+}

@@ -1,0 +1,528 @@
+/* engine_step.c — the stage pipeline, the RK4 step (the predictor-corrector of paper 003 with scheme
+ * same-phase-continuity) and the time-step limits (paper 000 Eq. 12). */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "physics/eos.h"
+#include "physics/passes.h"
+#include "base/mem.h"
+
+#define MOTION_SAFETY 0.75   /* fraction of the allowed motion per step used by the dt limit */
+
+static double *grow(double *a, long n) {
+  return mem_realloc(a, mem_bytes((size_t)n, sizeof(double), "work array"), "work array");
+}
+
+/* One work array: where its pointer lives, whether halo slots use it (else only the owned
+ * particles do), and the feature it belongs to (0: every scene). */
+struct work_slot {
+  double **a;
+  int halo;
+  unsigned feature;
+};
+
+/* Every work array of w in dimension dim; returns the count. */
+static int work_slots(struct work *w, int dim, struct work_slot *t) {
+  int n = 0;
+  for (int d = 0; d < dim; d++) {
+    t[n++] = (struct work_slot){&w->grad_rho[d], 1, FEAT_DIFFUSION};
+    t[n++] = (struct work_slot){&w->du[d], 1, FEAT_SHIFT};
+    t[n++] = (struct work_slot){&w->normal[d], 0, FEAT_SURFACE};
+    t[n++] = (struct work_slot){&w->dv[d], 0, 0};
+    t[n++] = (struct work_slot){&w->x0[d], 0, 0};
+    t[n++] = (struct work_slot){&w->v0[d], 0, 0};
+    t[n++] = (struct work_slot){&w->sum_x[d], 0, 0};
+    t[n++] = (struct work_slot){&w->sum_v[d], 0, 0};
+  }
+  t[n++] = (struct work_slot){&w->vol, 1, 0};
+  t[n++] = (struct work_slot){&w->div, 1, 0};
+  t[n++] = (struct work_slot){&w->surface, 1, FEAT_SURFACE};
+  t[n++] = (struct work_slot){&w->region, 0, FEAT_SURFACE};
+  t[n++] = (struct work_slot){&w->lambda, 0, FEAT_SURFACE};
+  t[n++] = (struct work_slot){&w->drho, 0, 0};
+  t[n++] = (struct work_slot){&w->rho0, 0, 0};
+  t[n++] = (struct work_slot){&w->sum_rho, 0, 0};
+  t[n++] = (struct work_slot){&w->rho_s, 1, FEAT_SHEPARD};
+  for (int d = 0; d < dim; d++) t[n++] = (struct work_slot){&w->interface_normal[d], 1, FEAT_SURFACE_TENSION};
+  t[n++] = (struct work_slot){&w->colour_grad, 0, FEAT_SURFACE_TENSION};
+  t[n++] = (struct work_slot){&w->kappa_curvature, 0, FEAT_SURFACE_TENSION};
+  t[n++] = (struct work_slot){&w->p_shepard, 1, FEAT_SAME_PHASE_CONTINUITY};
+  t[n++] = (struct work_slot){&w->gd_gamma, 1, FEAT_GENERALIZED_DISSIPATION};
+  for (int d = 0; d < dim; d++) t[n++] = (struct work_slot){&w->gd_grad_p[d], 1, FEAT_GENERALIZED_DISSIPATION};
+  return n;
+}
+
+#define MAX_WORK_SLOTS 48
+
+/* 1 if an optional array of a feature that is on has not been allocated yet. */
+static int optional_missing(const struct engine *e) {
+  return ((e->features & FEAT_SHIFT) && !e->w.du[0]) || ((e->features & FEAT_DIFFUSION) && !e->w.grad_rho[0]) || ((e->features & FEAT_SURFACE) && !e->w.surface) ||
+         ((e->features & FEAT_SHEPARD) && !e->w.rho_s) ||
+         ((e->features & FEAT_SURFACE_TENSION) && !e->w.colour_grad) ||
+         ((e->features & FEAT_SAME_PHASE_CONTINUITY) && !e->w.p_shepard) ||
+         ((e->features & FEAT_GENERALIZED_DISSIPATION) && !e->w.gd_gamma);
+}
+
+void engine_work_reserve(struct engine *e) {
+  struct work *w = &e->w;
+  struct work_slot t[MAX_WORK_SLOTS];
+  long n_all = e->p.capacity, n_owned = w->owned_capacity;
+  if (e->p.n_owned > n_owned) n_owned = e->p.n_owned + e->p.n_owned / 16 + 64;   /* room to migrate */
+  if (n_all <= w->capacity && n_owned <= w->owned_capacity && !optional_missing(e)) return;
+  for (int k = 0, n = work_slots(w, e->p.dim, t); k < n; k++)
+    if (!t[k].feature || (e->features & t[k].feature)) *t[k].a = grow(*t[k].a, t[k].halo ? n_all : n_owned);
+  w->capacity = n_all;
+  w->owned_capacity = n_owned;
+}
+
+long engine_work_bytes(struct engine *e) {
+  struct work_slot t[MAX_WORK_SLOTS];
+  long bytes = 0;
+  for (int k = 0, n = work_slots(&e->w, e->p.dim, t); k < n; k++)
+    if (*t[k].a) bytes += (t[k].halo ? e->w.capacity : e->w.owned_capacity) * (long)sizeof(double);
+  return bytes;
+}
+
+void engine_work_free(struct work *w) {
+  struct work_slot t[MAX_WORK_SLOTS];
+  for (int k = 0, n = work_slots(w, 3, t); k < n; k++) {
+    free(*t[k].a);
+    *t[k].a = NULL;
+  }
+}
+
+/* The arrays named by a halo field mask. */
+static int halo_field_list(struct engine *e, int mask, double **f) {
+  struct parts *p = &e->p;
+  int n = 0;
+  for (int d = 0; d < p->dim; d++) {
+    if (mask & HF_POS) f[n++] = p->x[d];
+    if (mask & HF_VEL) f[n++] = p->v[d];
+    if (mask & HF_GRAD_RHO) f[n++] = e->w.grad_rho[d];
+    if (mask & HF_SHIFT) f[n++] = e->w.du[d];
+    if (mask & HF_INTERFACE_NORMAL) f[n++] = e->w.interface_normal[d];
+    if (mask & HF_GD) f[n++] = e->w.gd_grad_p[d];
+  }
+  if (mask & HF_RHO) f[n++] = p->rho;
+  if (mask & HF_P) f[n++] = p->p;
+  if (mask & HF_MASS) f[n++] = p->m;
+  if (mask & HF_DIV) f[n++] = e->w.div;
+  if (mask & HF_SURFACE) f[n++] = e->w.surface;
+  if (mask & HF_RHO_SHEPARD) f[n++] = e->w.rho_s;
+  if (mask & HF_P_SHEPARD) f[n++] = e->w.p_shepard;
+  if (mask & HF_GD) f[n++] = e->w.gd_gamma;
+  return n;
+}
+
+/* Append an operation to the pipeline. engine_assemble makes at most 17 (ENGINE_MAX_OPS, engine.h),
+ * whatever the case; one more is a programming error, stopped here before it overflows e->ops. */
+static void add_op(struct engine *e, const char *name, void (*pass)(struct engine *), int mask,
+                   int once) {
+  if (e->n_ops == ENGINE_MAX_OPS) {
+    fprintf(stderr, "mpsph: internal error: the stage pipeline has more than %d operations (adding '%s')\n",
+            ENGINE_MAX_OPS, name);
+    exit(3);
+  }
+  e->ops[e->n_ops++] = (struct stage_op){.name = name, .pass = pass, .halo_fields = mask,
+                                         .once_per_step = once};
+}
+
+/* The particle volumes and the neighbour lists (the lists once per step). */
+static void add_volumes_and_lists(struct engine *e) {
+  add_op(e, "volumes m/rho of owned and halo particles", pass_volumes, 0, 0);
+  add_op(e, "neighbour lists of the owned fluid (once per step)", pass_neighbour_lists, 0, 1);
+}
+
+/* Scheme riemann: its own terms, with the walls, the potential, (with a light phase) the
+ * transport velocity and the surface tension; the delta-plus options of the case do not apply. */
+static unsigned riemann_features(const struct case_def *c) {
+  unsigned f = FEAT_RIEMANN | (c->n_walls ? FEAT_WALLS : 0) | (c->potential_omega > 0 ? FEAT_CENTRAL : 0);
+  if (c->surface_tension > 0 && c->n_phases > 1) f |= FEAT_SURFACE_TENSION;
+  for (int ph = 0; ph < c->n_phases; ph++)
+    if (riemann_light_phase(c, ph)) f |= FEAT_TRANSPORT_VELOCITY;
+  return f;
+}
+
+/* The gradient pass and the right-hand sides of schemes delta-plus and delta-sph. */
+static void add_gradients_and_rhs(struct engine *e, unsigned f) {
+  static const char *names[2][2] = {{"gradients: div u", "gradients: div u, shifting velocity"},
+                                    {"gradients: renormalised density gradient, div u",
+                                     "gradients: renormalised density gradient, div u, shifting velocity"}};
+  add_op(e, names[(f & FEAT_DIFFUSION) != 0][(f & FEAT_SHIFT) != 0], pass_gradients, 0, 0);
+  int halo = ((f & FEAT_DIFFUSION) ? HF_GRAD_RHO : 0) | ((f & FEAT_SHIFT) ? HF_SHIFT : 0) | ((f & FEAT_DAMPER) ? HF_DIV : 0);
+  if (halo) add_op(e, "halo: gradient-pass results", NULL, halo, 0);
+  add_op(e, "fluid rhs: continuity and momentum", pass_fluid_rhs, 0, 0);
+}
+
+/* The terms this case needs (DESIGN.md data flow 3: what a scene does not use is not computed). */
+static unsigned case_features(const struct engine *e) {
+  const struct case_def *c = e->c;
+  if (c->scheme == SCHEME_RIEMANN) return riemann_features(c);
+  unsigned f = 0;
+  int liquid = 0, viscous = c->alpha > 0;
+  for (int ph = 0; ph < c->n_phases; ph++) {
+    liquid |= c->phases[ph].incompressible;
+    viscous |= c->phases[ph].viscosity > 0;
+  }
+  if (c->delta > 0) f |= FEAT_DIFFUSION;
+  if (viscous) f |= FEAT_VISCOSITY;
+  if (c->n_walls) f |= FEAT_WALLS;
+  if (c->shifting != SHIFTING_NONE) f |= FEAT_SHIFT;
+  if (c->shifting == SHIFTING_CONSISTENT) f |= FEAT_DELTA_U;
+  if (c->acoustic_damper > 0 && liquid) f |= FEAT_DAMPER;
+  if (c->free_surface != FREE_SURFACE_OFF && !e->no_free_surface && (c->tensile_control || (f & FEAT_SHIFT)))
+    f |= FEAT_SURFACE;
+  if (c->tensile_control) f |= FEAT_TIC;
+  if (c->interface_sharpness > 0 && c->n_phases > 1) f |= FEAT_SHARPNESS;
+  if (c->potential_omega > 0) f |= FEAT_CENTRAL;
+  if (c->scheme == SCHEME_DELTA_SPH) f |= FEAT_SHEPARD;
+  if (c->scheme == SCHEME_SAME_PHASE_CONTINUITY) f |= FEAT_SAME_PHASE_CONTINUITY;
+  if (c->surface_tension > 0 && c->n_phases > 1) f |= FEAT_SURFACE_TENSION;
+  if (c->scheme == SCHEME_GENERALIZED_DISSIPATION) f |= FEAT_GENERALIZED_DISSIPATION;
+  return f;
+}
+
+/* alpha2 c0 h of each liquid phase (index phase + 1; walls at 0), 0 for gases. */
+static void damper_coefficients(struct engine *e) {
+  e->damper_coef[0] = 0;
+  for (int ph = 0; ph < e->c->n_phases; ph++) {
+    const struct phase *f = &e->c->phases[ph];
+    e->damper_coef[ph + 1] = (e->features & FEAT_DAMPER) && f->incompressible ? e->c->acoustic_damper * f->c0 * e->h : 0;
+  }
+}
+
+/* After a re-assembly: the operations that stay keep their accumulated time and pairs (matched by
+ * name); the time of those dropped goes to e->t_dropped_ops. */
+static void carry_op_totals(struct engine *e, const struct stage_op *old, int n_old) {
+  for (int k = 0; k < n_old; k++) {
+    int kept = 0;
+    for (int j = 0; j < e->n_ops && !kept; j++)
+      if (!strcmp(e->ops[j].name, old[k].name)) {
+        e->ops[j].seconds += old[k].seconds;
+        e->ops[j].pairs += old[k].pairs;
+        kept = 1;
+      }
+    if (!kept) e->t_dropped_ops += old[k].seconds;
+  }
+}
+
+void engine_assemble(struct engine *e) {
+  struct stage_op old[ENGINE_MAX_OPS];
+  int n_old = e->n_ops;
+  memcpy(old, e->ops, sizeof old);
+  unsigned f = e->features = case_features(e);
+  e->moving_walls = 0;
+  for (int w = 0; w < e->c->n_walls; w++) e->moving_walls |= e->c->walls[w].moving;
+  damper_coefficients(e);
+  interface_table(e->c->interface_mode, e->iface);
+  e->n_ops = 0;
+  if (f & FEAT_RIEMANN) {   /* its own pipeline, run by engine_step_dual */
+    engine_assemble_dual(e);
+    carry_op_totals(e, old, n_old);
+    engine_work_reserve(e);
+    return;
+  }
+  add_op(e, "halo: positions, velocities, densities, pressures", NULL, HF_POS | HF_VEL | HF_RHO | HF_P, 0);
+  if (f & FEAT_SHEPARD) {   /* the pressure first: the wall ghosts interpolate it */
+    add_volumes_and_lists(e);
+    add_op(e, "Shepard density and pressure (delta-sph)", pass_shepard_density, 0, 0);
+    add_op(e, "halo: Shepard densities, pressures", NULL, HF_RHO_SHEPARD | HF_P, 0);
+  }
+  if (f & FEAT_WALLS) {
+    add_op(e, "wall ghosts: Shepard interpolation at mirror points", pass_wall_ghosts, 0, 0);
+    add_op(e, "halo: wall ghost values", NULL, HF_VEL | HF_RHO | HF_P | HF_MASS, 0);
+  }
+  if (!(f & FEAT_SHEPARD)) add_volumes_and_lists(e);
+  if (f & FEAT_SURFACE) {
+    add_op(e, "free surface: eigenvalue + umbrella detection, normals (once per step)", pass_free_surface, 0, 1);
+    add_op(e, "halo: free-surface flags (once per step)", NULL, HF_SURFACE, 1);
+    add_op(e, "free-surface region: band around the detected particles (once per step)", pass_surface_band, 0, 1);
+  }
+  if (f & FEAT_SAME_PHASE_CONTINUITY) {   /* its own pair passes (main.c refuses the delta-plus terms) */
+    if (e->c->spc_model == SPC_PRESENT) {
+      add_op(e, "Shepard pressure over all phases (same-phase-continuity)", pass_shepard_pressure, 0, 0);
+      add_op(e, "halo: Shepard pressures", NULL, HF_P_SHEPARD, 0);
+    }
+    add_op(e, "same-phase continuity and momentum rhs", pass_same_phase_rhs, 0, 0);
+  } else if (f & FEAT_GENERALIZED_DISSIPATION) {
+    add_op(e, "gradients: Shepard sum Gamma, renormalised pressure gradient", pass_gd_gradients, 0, 0);
+    add_op(e, "halo: Gamma, pressure gradients", NULL, HF_GD, 0);
+    add_op(e, "fluid rhs: continuity with generalized dissipation, momentum", pass_gd_rhs, 0, 0);
+  } else
+    add_gradients_and_rhs(e, f);
+  if (f & FEAT_SURFACE_TENSION) {
+    add_op(e, "surface tension: colour gradient, interface normals", pass_interface_normals, 0, 0);
+    add_op(e, "halo: interface normals", NULL, HF_INTERFACE_NORMAL, 0);
+    add_op(e, "surface tension: curvature, CSF force", pass_surface_tension, 0, 0);
+  }
+  if ((f & FEAT_WALLS) && e->c->wall_guard > 0)
+    add_op(e, "wall guard: no acceleration into a wall within the guard distance", pass_wall_guard, 0, 0);
+  carry_op_totals(e, old, n_old);
+  engine_work_reserve(e);
+}
+
+/** Print the assembled pipeline and the active terms (rank 0). */
+void engine_print_pipeline(const struct engine *e) {
+  static const char *names[] = {"wall ghosts", "shifting", "delta-u terms", "acoustic damper",
+                                "free-surface detection", "tensile instability control",
+                                "interface sharpness", "quadratic potential", "surface tension",
+                                "Shepard density", "same-phase continuity", "generalized dissipation"};
+  if (e->rank) return;
+  printf("terms:");
+  for (int k = 0; k < (int)(sizeof names / sizeof names[0]); k++)
+    if (e->features & (1u << k)) printf(" [%s]", names[k]);
+  if (e->features & FEAT_RIEMANN) printf(" [Riemann SPH, density re-initialisation, dual time stepping]");
+  if (e->features & FEAT_TRANSPORT_VELOCITY) printf(" [transport velocity of the light phases]");
+  if (e->features & FEAT_DIFFUSION) printf(" [density diffusion]");
+  if (e->features & FEAT_VISCOSITY) printf(" [viscosity]");
+  printf("\npipeline per %s (%d operations):\n", (e->features & FEAT_RIEMANN) ? "advection step" : "RK stage", e->n_ops);
+  for (int k = 0; k < e->n_ops; k++) printf("  %d. %s\n", k + 1, e->ops[k].name);
+}
+
+void engine_run_op(struct engine *e, int k) {
+  double *fields[32];
+  struct stage_op *op = &e->ops[k];
+  double t0 = MPI_Wtime();
+  if (op->pass) {
+    e->pass_pairs = 0;
+    op->pass(e);
+    op->pairs += e->pass_pairs;
+  } else {
+    halo_update(&e->halo, &e->p, fields, halo_field_list(e, op->halo_fields, fields));
+  }
+  op->seconds += MPI_Wtime() - t0;
+  if (op->pass) e->t_compute += MPI_Wtime() - t0;
+}
+
+void engine_evaluate(struct engine *e, int skip_state_halo) {
+  for (int k = skip_state_halo ? 1 : 0; k < e->n_ops; k++)
+    if (!e->ops[k].once_per_step || e->stage <= 0) engine_run_op(e, k);
+}
+
+void engine_ghosts_now(struct engine *e) {
+  int shepard = (e->features & FEAT_SHEPARD) != 0, walls = (e->features & FEAT_WALLS) != 0;
+  if (!shepard && !walls) return;
+  double *fields[32];
+  halo_update(&e->halo, &e->p, fields, halo_field_list(e, HF_POS | HF_VEL | HF_RHO | HF_P, fields));
+  if (shepard) {   /* delta-sph: the stage's first operations, which set the pressure */
+    pass_volumes(e);
+    pass_neighbour_lists(e);
+    pass_shepard_density(e);
+    halo_update(&e->halo, &e->p, fields, halo_field_list(e, HF_RHO_SHEPARD | HF_P, fields));
+  }
+  if (walls) {
+    pass_wall_ghosts(e);
+    halo_update(&e->halo, &e->p, fields, halo_field_list(e, HF_VEL | HF_RHO | HF_P | HF_MASS, fields));
+  }
+  e->pass_pairs = 0;
+}
+
+double engine_shift_max(const struct engine *e) { return 0.5 * (ENGINE_CELL_SKIN - 1.0) * e->kern.support; }
+
+/* |u_w|^2 of moving-wall ghost i at the current stage [m^2/s^2]. */
+static double wall_speed2(const struct engine *e, long i) {
+  double x[3] = {0, 0, 0}, u[3] = {0, 0, 0}, u2 = 0;
+  for (int d = 0; d < e->p.dim; d++) x[d] = e->p.x[d][i];
+  frame_velocity(&e->frames[e->p.wall[i]], e->p.dim, x, u);
+  for (int d = 0; d < e->p.dim; d++) u2 += u[d] * u[d];
+  return u2;
+}
+
+/* Global maxima of the acceleration and of the advection speed |u + du| [m/s^2, m/s], and the
+ * minimum density per phase, from the first stage. */
+static void reduce_first_stage(struct engine *e, double *a_max, double *adv_max) {
+  const struct parts *p = &e->p;
+  int np = e->c->n_phases;
+  double max2[2] = {0, 0};   /* |a|^2, |u + du|^2 */
+  for (int ph = 0; ph < np; ph++) e->rho_min[ph] = INFINITY;
+  for (long i = 0; i < p->n_owned; i++) {
+    int ph = p->phase[i];
+    if (engine_moving_ghost(e, i)) max2[1] = fmax(max2[1], wall_speed2(e, i));
+    if (ph == PHASE_WALL) continue;
+    double a2 = 0, w2 = 0;
+    for (int d = 0; d < p->dim; d++) {
+      double w = p->v[d][i] + (e->w.du[d] ? e->w.du[d][i] : 0.0);
+      a2 += e->w.dv[d][i] * e->w.dv[d][i];
+      w2 += w * w;
+    }
+    if (!(a2 <= max2[0])) max2[0] = a2;   /* NaN propagates */
+    if (!(w2 <= max2[1])) max2[1] = w2;
+    e->rho_min[ph] = fmin(e->rho_min[ph], p->rho[i]);
+  }
+  MPI_Allreduce(MPI_IN_PLACE, max2, 2, MPI_DOUBLE, MPI_MAX, e->comm);
+  MPI_Allreduce(MPI_IN_PLACE, e->rho_min, np, MPI_DOUBLE, MPI_MIN, e->comm);
+  *a_max = sqrt(max2[0]);
+  *adv_max = sqrt(max2[1]);
+}
+
+/* The stable sound speed of Eq. 12 for every liquid/gas pair present:
+ * c_stab = c0_l sqrt(gamma_g rho0_l / (gamma_l rho_min_g)) (Sun et al. 2021). */
+static double stable_sound_speed(const struct engine *e) {
+  const struct case_def *c = e->c;
+  double c_stab = 0;
+  for (int l = 0; l < c->n_phases; l++)
+    for (int g = 0; g < c->n_phases; g++) {
+      const struct phase *pl = &c->phases[l], *pg = &c->phases[g];
+      if (!pl->incompressible || pg->incompressible || !isfinite(e->rho_min[g])) continue;
+      c_stab = fmax(c_stab, pl->c0 * sqrt(pg->gamma * pl->rho0 / (pl->gamma * e->rho_min[g])));
+    }
+  return c_stab;
+}
+
+/* Lower *dt to candidate if smaller, naming the limit. */
+static void limit_by(double *dt, const char **limit, double candidate, const char *name) {
+  if (candidate < *dt) {
+    *dt = candidate;
+    *limit = name;
+  }
+}
+
+double engine_capillary_dt(const struct engine *e) {
+  double rho_min = INFINITY;
+  for (int ph = 0; ph < e->c->n_phases; ph++) rho_min = fmin(rho_min, e->c->phases[ph].rho0);
+  return 0.25 * sqrt(rho_min * e->h * e->h * e->h / (2.0 * 3.14159265358979323846 * e->c->surface_tension));
+}
+
+/* The time-step limits of paper 000 Eq. 12: acoustic (with c_stab), acceleration, viscous,
+ * damper; *limit names the smallest term. Scheme same-phase-continuity takes paper 003's
+ * CFL h / c0 (section 3.3) without c_stab and without the acceleration and artificial-viscosity
+ * limits; the physical viscous and capillary limits stay. */
+static double delta_plus_step(const struct engine *e, double a_max, const char **limit) {
+  const struct case_def *c = e->c;
+  const int paper003 = (e->features & FEAT_SAME_PHASE_CONTINUITY) != 0;
+  double c_eff = paper003 ? e->c_max : fmax(e->c_max, stable_sound_speed(e));
+  double dt = c->cfl * e->h / c_eff;
+  *limit = c_eff > e->c_max ? "acoustic (c_stab)" : "acoustic";
+  if (a_max > 0 && !paper003) limit_by(&dt, limit, 0.25 * sqrt(e->h / a_max), "acceleration");
+  for (int ph = 0; ph < c->n_phases; ph++) {
+    const struct phase *f = &c->phases[ph];
+    if (c->alpha > 0 && !paper003) limit_by(&dt, limit, e->h / (c->alpha * f->c0), "artificial viscosity");
+    if (f->viscosity > 0) limit_by(&dt, limit, 0.125 * e->h * e->h * f->rho0 / f->viscosity, "viscous");
+    if ((e->features & FEAT_DAMPER) && f->incompressible)
+      limit_by(&dt, limit, c->cfl * e->h / (c->acoustic_damper * f->c0), "acoustic damper");
+  }
+  if (e->features & FEAT_SURFACE_TENSION) limit_by(&dt, limit, engine_capillary_dt(e), "capillary");
+  return dt;
+}
+
+/* Global time step: the scheme's limits (paper 000 Eq. 12, or paper 004 Eq. 23 for
+ * generalized-dissipation) and the motion limit of the cell skin; *limit names the smallest
+ * term. Not yet cut to time.end. */
+static double time_step(struct engine *e, const char **limit) {
+  double a_max, adv_max;
+  reduce_first_stage(e, &a_max, &adv_max);
+  double dt = (e->features & FEAT_GENERALIZED_DISSIPATION) ? gd_time_step(e, a_max, adv_max, limit)
+                                                          : delta_plus_step(e, a_max, limit);
+  if (adv_max > 0) limit_by(&dt, limit, MOTION_SAFETY * engine_shift_max(e) / adv_max, "motion (cell skin)");
+  return dt;
+}
+
+static void save_state(struct engine *e) {
+  struct parts *p = &e->p;
+  for (long i = 0; i < p->n_owned; i++) {
+    for (int d = 0; d < p->dim; d++) {
+      e->w.x0[d][i] = p->x[d][i];
+      e->w.v0[d][i] = p->v[d][i];
+    }
+    e->w.rho0[i] = p->rho[i];
+  }
+}
+
+/* The frames of the moving walls at time t [s]. */
+static void wall_frames(const struct engine *e, double t, struct frame *f) {
+  for (int w = 0; w < e->c->n_walls; w++)
+    if (e->c->walls[w].moving) motion_frame(&e->c->walls[w].motion, t, &f[w]);
+}
+
+/* Carry the owned ghosts of moving walls rigidly from their place at the start of the step
+ * (frames `start`) to time t [s]. */
+static void move_ghosts(struct engine *e, const struct frame *start, double t) {
+  struct parts *p = &e->p;
+  struct frame now[CASE_MAX_WALLS];
+  wall_frames(e, t, now);
+  for (long i = 0; i < p->n_owned; i++) {
+    if (!engine_moving_ghost(e, i)) continue;
+    double x0[3] = {0, 0, 0}, ref[3], x[3];
+    for (int d = 0; d < p->dim; d++) x0[d] = e->w.x0[d][i];
+    frame_reference(&start[p->wall[i]], p->dim, x0, ref);
+    frame_position(&now[p->wall[i]], p->dim, ref, x);
+    for (int d = 0; d < p->dim; d++) p->x[d][i] = x[d];
+  }
+}
+
+/* An explicit Runge-Kutta scheme of the form the update below runs: stage s + 1 evaluates
+ * x0 + next[s] dt k_s (and the time offset[s + 1] dt), the step ends at
+ * x0 + dt sum_s weight[s] k_s / divisor. */
+struct rk_scheme {
+  int stages;
+  double weight[4], next[3], offset[4], divisor;
+};
+
+/* The classical RK4 (paper 000), and the predictor-corrector of paper 003 Eqs. 40-42:
+ * phi^1/2 = phi^0 + dt/2 phi'^0, phi^1 = 2 (phi^0 + dt/2 phi'^1/2) - phi^0 = phi^0 + dt phi'^1/2
+ * (the explicit midpoint rule, two rhs evaluations per step). */
+static const struct rk_scheme RK4 = {4, {1, 2, 2, 1}, {0.5, 0.5, 1.0}, {0, 0.5, 0.5, 1.0}, 6.0};
+static const struct rk_scheme MIDPOINT_PC = {2, {0, 1}, {0.5}, {0, 0.5}, 1.0};
+
+/* The density threshold of paper 003 Eq. 28: a negative pressure is raised to 0 by setting the
+ * density to that of zero pressure in the particle's phase. */
+static void density_threshold(struct parts *p, long i, const struct phase *f) {
+  if (p->p[i] >= 0) return;
+  p->rho[i] = eos_density(f, 0.0);
+  p->p[i] = 0.0;
+}
+
+/* Accumulate stage s's derivatives with the scheme's weight and move owned fluid to the next
+ * stage state. Positions advance with u + du (du = 0 without shifting); moving walls go where
+ * their motion puts them at the next stage's time. */
+static void rk_update(struct engine *e, const struct rk_scheme *rk, int s, const struct frame *start) {
+  struct parts *p = &e->p;
+  struct work *w = &e->w;
+  const int last = s == rk->stages - 1, threshold = (e->features & FEAT_SAME_PHASE_CONTINUITY) != 0;
+  double ws = rk->weight[s], step = !last ? rk->next[s] * e->dt : e->dt / rk->divisor;
+  for (long i = 0; i < p->n_owned; i++) {
+    if (p->phase[i] == PHASE_WALL) continue;
+    for (int d = 0; d < p->dim; d++) {
+      double dxdt = p->v[d][i] + (w->du[d] ? w->du[d][i] : 0.0);
+      w->sum_x[d][i] = (s ? w->sum_x[d][i] : 0) + ws * dxdt;
+      w->sum_v[d][i] = (s ? w->sum_v[d][i] : 0) + ws * w->dv[d][i];
+      p->x[d][i] = w->x0[d][i] + step * (!last ? dxdt : w->sum_x[d][i]);
+      p->v[d][i] = w->v0[d][i] + step * (!last ? w->dv[d][i] : w->sum_v[d][i]);
+    }
+    w->sum_rho[i] = (s ? w->sum_rho[i] : 0) + ws * w->drho[i];
+    p->rho[i] = w->rho0[i] + step * (!last ? w->drho[i] : w->sum_rho[i]);
+    p->p[i] = eos_pressure(&e->c->phases[p->phase[i]], p->rho[i]);
+    if (threshold) density_threshold(p, i, &e->c->phases[p->phase[i]]);
+  }
+  if (e->moving_walls) move_ghosts(e, start, e->step_start_time + (!last ? rk->next[s] : 1.0) * e->dt);
+}
+
+int engine_step(struct engine *e) {
+  const struct rk_scheme *rk = (e->features & FEAT_SAME_PHASE_CONTINUITY) ? &MIDPOINT_PC : &RK4;
+  struct frame start[CASE_MAX_WALLS];
+  if (e->features & FEAT_RIEMANN) return engine_step_dual(e);
+  engine_work_reserve(e);
+  save_state(e);
+  e->step_start_time = e->time;
+  e->step_start = e->step;
+  wall_frames(e, e->time, start);
+  for (int s = 0; s < rk->stages; s++) {
+    e->stage = s;
+    e->stage_time = e->time + rk->offset[s] * e->dt;
+    wall_frames(e, e->stage_time, e->frames);
+    engine_evaluate(e, s == 0);
+    if (engine_check_derivatives(e)) return 2;
+    if (s == 0) {
+      const char *limit;
+      e->dt = time_step(e, &limit);
+      if (engine_check_dt(e, limit)) return 2;
+      e->dt = fmin(e->dt, e->c->t_end - e->time);
+    }
+    rk_update(e, rk, s, start);
+  }
+  e->stage = -1;   /* between steps */
+  e->time += e->dt;
+  e->step++;
+  return 0;
+}

@@ -1,0 +1,84 @@
+/* nlist.c — per-step neighbour lists built from the cell index, stored as bit masks over the
+ * candidates of each cell's stencil. */
+#include <stdlib.h>
+#include <string.h>
+#include "parallel/nlist.h"
+#include "base/mem.h"
+
+#define WORD_BITS 64
+
+static void *grow(void *a, long *capacity, long needed, size_t size) {
+  if (needed <= *capacity) return a;
+  long n = needed + needed / 4 + 64;
+  void *q = mem_realloc(a, mem_bytes((size_t)n, size, "neighbour lists"), "neighbour lists");
+  *capacity = n;
+  return q;
+}
+
+/* Set in mask the bits of the candidates r within radius2 of owned slot i (not i itself). */
+static void mark_neighbours(const struct nlist *l, const struct parts *p, long i,
+                            const struct neighbour_ranges *r, uint64_t *mask) {
+  const int dim = p->dim;
+  long b = 0;
+  for (int k = 0; k < r->n; k++)
+    for (long j = r->start[k]; j < r->start[k] + r->count[k]; j++, b++) {
+      double r2 = 0;
+      for (int d = 0; d < dim; d++) r2 += (p->x[d][i] - p->x[d][j]) * (p->x[d][i] - p->x[d][j]);
+      if (r2 < l->radius2 && j != i) mask[b / WORD_BITS] |= (uint64_t)1 << (b % WORD_BITS);
+    }
+}
+
+/* Fluid particles of cell c. */
+static long fluid_in_cell(const struct space *s, const struct parts *p, long c) {
+  long n = 0;
+  for (long i = s->cell_start[c]; i < s->cell_start[c] + s->cell_count[c]; i++) n += p->phase[i] != PHASE_WALL;
+  return n;
+}
+
+/* Place the masks of the n_fluid fluid particles of owned cell k (stencil ranges r) from word n
+ * on; returns the words they take. */
+static long place_cell(struct nlist *l, long k, const struct neighbour_ranges *r, long n_fluid, long n) {
+  long candidates = 0;
+  for (int q = 0; q < r->n; q++) candidates += r->count[q];
+  int words = (int)((candidates + WORD_BITS - 1) / WORD_BITS);
+  l->candidates = grow(l->candidates, &l->candidate_capacity, candidates, sizeof(int));
+  l->cells[k] = (struct nlist_cell){n, words};
+  return words * n_fluid;
+}
+
+void nlist_build(struct nlist *l, const struct space *s, const struct parts *p, double radius) {
+  l->radius2 = radius * radius;
+  l->cells = grow(l->cells, &l->cell_capacity, s->n_owned_cells, sizeof(struct nlist_cell));
+  long n = 0;
+  for (long k = 0; k < s->n_owned_cells; k++) {
+    long c = s->owned_cells[k], first = s->cell_start[c];
+    struct neighbour_ranges r;
+    neighbour_ranges(s, c, &r);
+    long words = place_cell(l, k, &r, fluid_in_cell(s, p, c), n);
+    l->bits = grow(l->bits, &l->capacity, n + words, sizeof(uint64_t));
+    if (words > 0) memset(l->bits + n, 0, words * sizeof(uint64_t));   /* bits may still be NULL */
+    for (long i = first; i < first + s->cell_count[c]; i++) {
+      if (p->phase[i] == PHASE_WALL) continue;
+      mark_neighbours(l, p, i, &r, l->bits + n);
+      n += l->cells[k].words;
+    }
+  }
+}
+
+void nlist_enter_cell(struct nlist *l, const struct neighbour_ranges *r) {
+  int *slot = l->candidates;
+  for (int q = 0; q < r->n; q++)
+    for (long j = r->start[q]; j < r->start[q] + r->count[q]; j++) *slot++ = (int)j;
+}
+
+void nlist_free(struct nlist *l) {
+  free(l->cells);
+  free(l->bits);
+  free(l->candidates);
+  memset(l, 0, sizeof(*l));
+}
+
+long nlist_bytes(const struct nlist *l) {
+  return l->capacity * (long)sizeof(uint64_t) + l->cell_capacity * (long)sizeof(struct nlist_cell) +
+         l->candidate_capacity * (long)sizeof(int);
+}

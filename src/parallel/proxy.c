@@ -1,0 +1,271 @@
+/* proxy.c — proxies (one per neighbouring rank), halo rebuild, per-field halo updates and
+ * migration of particles between neighbouring ranks. */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "base/mem.h"
+#include "parallel/proxy.h"
+
+enum { TAG_COUNT = 11, TAG_PARTS = 12, TAG_FIELDS = 13, TAG_MIGRATE_COUNT = 14, TAG_MIGRATE = 15 };
+
+int parts_packed_size(const struct parts *p) {
+  return 2 * p->dim + 6 + (p->wall ? p->dim + 1 : 0);
+}
+
+void parts_pack(const struct parts *p, long i, double *b) {
+  for (int d = 0; d < p->dim; d++) { *b++ = p->x[d][i]; *b++ = p->v[d][i]; }
+  *b++ = p->rho[i];
+  *b++ = p->p[i];
+  *b++ = p->m[i];
+  *b++ = (double)p->phase[i];
+  *b++ = (double)p->id[i];
+  *b++ = (double)p->cell[i];
+  if (!p->wall) return;
+  for (int d = 0; d < p->dim; d++) *b++ = p->mirror[d][i];
+  *b = (double)p->wall[i];
+}
+
+void parts_unpack(struct parts *p, long j, const double *b) {
+  for (int d = 0; d < p->dim; d++) { p->x[d][j] = *b++; p->v[d][j] = *b++; }
+  p->rho[j] = *b++;
+  p->p[j] = *b++;
+  p->m[j] = *b++;
+  p->phase[j] = (int)*b++;
+  p->id[j] = (int64_t)*b++;
+  p->cell[j] = (int)*b++;
+  if (!p->wall) return;
+  for (int d = 0; d < p->dim; d++) p->mirror[d][j] = *b++;
+  p->wall[j] = (int)*b;
+}
+
+static void reserve_buf(double **buf, long *cap, long n) {
+  if (n <= *cap) return;
+  *cap = n + n / 4 + 64;
+  *buf = mem_realloc(*buf, mem_bytes(*cap, sizeof(double), "halo buffer"), "halo buffer");
+}
+
+/* Mark, for every rank, the owned cells lying within `layers` of one of its cells. */
+static void mark_cells_out(const struct space *s, char *mark /* n_ranks x n_owned_cells */) {
+  long *nb = mem_calloc(grid_stencil_size(&s->grid, s->halo_layers), sizeof(long), "halo cell stencil");
+  for (long k = 0; k < s->n_owned_cells; k++) {
+    int n = grid_stencil(&s->grid, s->owned_cells[k], s->halo_layers, nb);
+    for (int j = 0; j < n; j++) {
+      int r = s->owner[nb[j]];
+      if (r != s->rank) mark[(long)r * s->n_owned_cells + k] = 1;
+    }
+  }
+  free(nb);
+}
+
+void halo_build(struct halo *h, const struct space *s, MPI_Comm comm) {
+  halo_free(h);
+  h->comm = comm;
+  h->proxy_of_rank = mem_calloc(s->n_ranks, sizeof(int), "halo proxy table");
+  char *mark = mem_calloc((size_t)s->n_ranks, s->n_owned_cells ? s->n_owned_cells : 1, "halo cell marks");
+  mark_cells_out(s, mark);
+  h->proxies = mem_calloc(s->n_ranks, sizeof(struct proxy), "halo proxies");
+  for (int r = 0; r < s->n_ranks; r++) {
+    const char *row = mark + (long)r * s->n_owned_cells;
+    long n = 0;
+    for (long k = 0; k < s->n_owned_cells; k++) n += row[k];
+    h->proxy_of_rank[r] = n ? h->n_proxies : -1;
+    if (!n) continue;
+    struct proxy *px = &h->proxies[h->n_proxies++];
+    px->rank = r;
+    px->cells_out = mem_calloc(n, sizeof(long), "halo cells to send");
+    for (long k = 0; k < s->n_owned_cells; k++)
+      if (row[k]) px->cells_out[px->n_cells_out++] = s->owned_cells[k];
+  }
+  free(mark);
+  h->requests = mem_calloc(2 * (h->n_proxies + 1), sizeof(MPI_Request), "halo requests");
+  h->counts = mem_calloc(4 * (h->n_proxies + 1), sizeof(long), "halo counts");
+}
+
+long halo_bytes(const struct halo *h) {
+  long bytes = 0;
+  for (int k = 0; k < h->n_proxies; k++) {
+    const struct proxy *px = &h->proxies[k];
+    bytes += (px->n_cells_out + px->send_index_cap) * (long)sizeof(long) +
+             (px->send_cap + px->recv_cap) * (long)sizeof(double);
+  }
+  return bytes;
+}
+
+/* The halo's count scratch (4 rows of n_proxies + 1), zeroed. */
+static long *zeroed_counts(struct halo *h) {
+  memset(h->counts, 0, 4 * (h->n_proxies + 1) * sizeof(long));
+  return h->counts;
+}
+
+void halo_free(struct halo *h) {
+  for (int k = 0; k < h->n_proxies; k++) {
+    struct proxy *px = &h->proxies[k];
+    free(px->cells_out);
+    free(px->send_index);
+    free(px->send_buf);
+    free(px->recv_buf);
+  }
+  free(h->proxies);
+  free(h->proxy_of_rank);
+  free(h->requests);
+  free(h->counts);
+  long messages = h->n_messages, bytes = h->n_bytes;
+  memset(h, 0, sizeof(*h));
+  h->n_messages = messages;
+  h->n_bytes = bytes;
+}
+
+/* Fill send_index with the owned slots of the particles in cells_out. */
+static void collect_send(struct proxy *px, const struct space *s) {
+  long n = 0;
+  for (long k = 0; k < px->n_cells_out; k++) n += s->cell_count[px->cells_out[k]];
+  if (n > px->send_index_cap) {
+    px->send_index_cap = n + n / 4 + 64;
+    px->send_index = mem_realloc(px->send_index, mem_bytes(px->send_index_cap, sizeof(long), "halo send index"),
+                                  "halo send index");
+  }
+  px->n_send = 0;
+  for (long k = 0; k < px->n_cells_out; k++) {
+    long c = px->cells_out[k], start = s->cell_start[c];
+    for (int j = 0; j < s->cell_count[c]; j++) px->send_index[px->n_send++] = start + j;
+  }
+}
+
+/* Exchange one count per proxy: send[k] goes to proxy k, recv[k] comes from it. */
+static void exchange_counts(struct halo *h, const long *send, long *recv, int tag) {
+  MPI_Request *req = h->requests;
+  for (int k = 0; k < h->n_proxies; k++) {
+    MPI_Irecv(&recv[k], 1, MPI_LONG, h->proxies[k].rank, tag, h->comm, &req[2 * k]);
+    MPI_Isend(&send[k], 1, MPI_LONG, h->proxies[k].rank, tag, h->comm, &req[2 * k + 1]);
+  }
+  MPI_Waitall(2 * h->n_proxies, req, MPI_STATUSES_IGNORE);
+}
+
+/* Post the exchange of send_buf (n_send_vals) / recv_buf (n_recv_vals) with every proxy and wait. */
+static void exchange_buffers(struct halo *h, const long *n_send_vals, const long *n_recv_vals,
+                             int tag) {
+  MPI_Request *req = h->requests;
+  int nreq = 0;
+  for (int k = 0; k < h->n_proxies; k++) {
+    struct proxy *px = &h->proxies[k];
+    if (n_recv_vals[k])
+      MPI_Irecv(px->recv_buf, (int)n_recv_vals[k], MPI_DOUBLE, px->rank, tag, h->comm, &req[nreq++]);
+    if (n_send_vals[k]) {
+      MPI_Isend(px->send_buf, (int)n_send_vals[k], MPI_DOUBLE, px->rank, tag, h->comm, &req[nreq++]);
+      h->n_messages++;
+      h->n_bytes += n_send_vals[k] * (long)sizeof(double);
+    }
+  }
+  MPI_Waitall(nreq, req, MPI_STATUSES_IGNORE);
+}
+
+void halo_rebuild(struct halo *h, const struct space *s, struct parts *p) {
+  int np = h->n_proxies, w = parts_packed_size(p);
+  long *counts = zeroed_counts(h);
+  long *n_send = counts, *n_recv = counts + np + 1, *vals_send = counts + 2 * (np + 1),
+       *vals_recv = counts + 3 * (np + 1);
+  for (int k = 0; k < np; k++) {
+    collect_send(&h->proxies[k], s);
+    n_send[k] = h->proxies[k].n_send;
+  }
+  exchange_counts(h, n_send, n_recv, TAG_COUNT);
+  long total = 0;
+  for (int k = 0; k < np; k++) {
+    struct proxy *px = &h->proxies[k];
+    px->n_recv = n_recv[k];
+    px->recv_first = p->n_owned + total;
+    total += n_recv[k];
+    vals_send[k] = n_send[k] * w;
+    vals_recv[k] = n_recv[k] * w;
+    reserve_buf(&px->send_buf, &px->send_cap, vals_send[k]);
+    reserve_buf(&px->recv_buf, &px->recv_cap, vals_recv[k]);
+    for (long i = 0; i < px->n_send; i++) parts_pack(p, px->send_index[i], px->send_buf + i * w);
+  }
+  parts_reserve(p, p->n_owned + total);
+  exchange_buffers(h, vals_send, vals_recv, TAG_PARTS);
+  for (int k = 0; k < np; k++) {
+    struct proxy *px = &h->proxies[k];
+    for (long i = 0; i < px->n_recv; i++) parts_unpack(p, px->recv_first + i, px->recv_buf + i * w);
+  }
+  p->n_halo = total;
+}
+
+void halo_update(struct halo *h, const struct parts *p, double *const *fields, int n_fields) {
+  (void)p;
+  int np = h->n_proxies;
+  long *vals = zeroed_counts(h);
+  for (int k = 0; k < np; k++) {
+    struct proxy *px = &h->proxies[k];
+    vals[k] = px->n_send * n_fields;
+    vals[np + 1 + k] = px->n_recv * n_fields;
+    reserve_buf(&px->send_buf, &px->send_cap, vals[k]);
+    reserve_buf(&px->recv_buf, &px->recv_cap, vals[np + 1 + k]);
+    for (int f = 0; f < n_fields; f++) {
+      double *dst = px->send_buf + f * px->n_send;
+      for (long i = 0; i < px->n_send; i++) dst[i] = fields[f][px->send_index[i]];
+    }
+  }
+  exchange_buffers(h, vals, vals + np + 1, TAG_FIELDS);
+  for (int k = 0; k < np; k++) {
+    struct proxy *px = &h->proxies[k];
+    for (int f = 0; f < n_fields; f++) {
+      const double *src = px->recv_buf + f * px->n_recv;
+      double *dst = fields[f] + px->recv_first;
+      memcpy(dst, src, px->n_recv * sizeof(double));
+    }
+  }
+}
+
+/* The id of an owned particle whose new owner is neither this rank nor a neighbour, or -1. */
+static int64_t first_lost(const struct halo *h, const struct space *s, const struct parts *p) {
+  for (long i = 0; i < p->n_owned; i++) {
+    int dest = s->owner[p->cell[i]];
+    if (dest != s->rank && h->proxy_of_rank[dest] < 0) return p->id[i];
+  }
+  return -1;
+}
+
+/* Pack the owned particles leaving for each proxy (all neighbours, see first_lost); compacts the
+ * stayers. */
+static void pack_strays(struct halo *h, const struct space *s, struct parts *p, long *n_out) {
+  int w = parts_packed_size(p);
+  long kept = 0;
+  for (long i = 0; i < p->n_owned; i++) {
+    int dest = s->owner[p->cell[i]];
+    if (dest == s->rank) {
+      if (kept != i) parts_copy_one(p, kept, p, i);
+      kept++;
+      continue;
+    }
+    struct proxy *px = &h->proxies[h->proxy_of_rank[dest]];
+    int k = h->proxy_of_rank[dest];
+    reserve_buf(&px->send_buf, &px->send_cap, (n_out[k] + 1) * w);
+    parts_pack(p, i, px->send_buf + n_out[k] * w);
+    n_out[k]++;
+  }
+  p->n_owned = kept;
+}
+
+int64_t halo_migrate(struct halo *h, const struct space *s, struct parts *p) {
+  int np = h->n_proxies, w = parts_packed_size(p);
+  long *counts = zeroed_counts(h);
+  long *n_out = counts, *n_in = counts + np + 1, *vals_out = counts + 2 * (np + 1),
+       *vals_in = counts + 3 * (np + 1);
+  int64_t lost = first_lost(h, s, p), lost_any;
+  MPI_Allreduce(&lost, &lost_any, 1, MPI_INT64_T, MPI_MAX, h->comm);
+  if (lost_any >= 0) return lost_any;
+  pack_strays(h, s, p, n_out);
+  exchange_counts(h, n_out, n_in, TAG_MIGRATE_COUNT);
+  long total = 0;
+  for (int k = 0; k < np; k++) {
+    vals_out[k] = n_out[k] * w;
+    vals_in[k] = n_in[k] * w;
+    reserve_buf(&h->proxies[k].recv_buf, &h->proxies[k].recv_cap, vals_in[k]);
+    total += n_in[k];
+  }
+  exchange_buffers(h, vals_out, vals_in, TAG_MIGRATE);
+  parts_reserve(p, p->n_owned + total);
+  for (int k = 0; k < np; k++)
+    for (long i = 0; i < n_in[k]; i++) parts_unpack(p, p->n_owned++, h->proxies[k].recv_buf + i * w);
+  return -1;
+}

@@ -1,0 +1,216 @@
+/* pass_fluid_rhs.c — right-hand sides of owned fluid particles, paper 000 Eqs. 5-10, 16-20:
+ *   drho_i/dt = -rho_i <div u>_i + delta h c0 D_i
+ *               + sum_j [(phi_ij rho_j - eps_ij rho_i) du_j + (eps_ii + phi_ii) rho_i du_i] . gW_ij
+ *   rho_i du_i/dt = -sum_j (p_j + s_i p_i) gW_ij + K_i sum_{j in phase(i) or wall} pi_ij gW_ij
+ *                   + sum_{j in phase(i)} [rho_i u_i (du_i . gW_ij) + rho_j u_j (du_j . gW_ij)]
+ *                   + 2(dim+2) sum_{j other fluid} mu_ij pi_ij gW_ij   (interface viscosity: harmonic)
+ *                   - chi sum_{j other fluid} (|p_i| + |p_j|) gW_ij
+ *                   + rho_i alpha2 c0 h sum_j (D~_j + D_i) gW_ij   (acoustic damper on liquids, symmetric
+ *                        form; D~_j = D_j in the phase of i, 0 in other phases and walls)
+ *                   + rho_i alpha2 c0 h sum_{j in phase(i)} (D_j - D_i) gW_ij   (difference form)
+ *                   + rho_i (g - omega^2 (r_i - c))
+ * with gW_ij = grad_i W_ij V_j = F_ij (r_i - r_j) V_j, D_i = sum_{j in phase(i)} psi_ij (-F_ij) V_j,
+ * psi_ij = 2(rho_j - rho_i) - (<grad rho>_i + <grad rho>_j).r_ji, pi_ij = u_ji.r_ji/(r^2 + 0.01 h^2),
+ * K_i = alpha h c0 rho0 + 2(dim+2) mu, mu_ij = 2 mu_i mu_j/(mu_i + mu_j), s_i = -1 (tensile control: p_i < 0 outside the free-surface
+ * region) else +1, D = <div u>. eps/phi: interface.c.
+ * The terms a case does not use are compiled out of its loop (see dispatch()). */
+#include <math.h>
+#include "physics/interface.h"
+#include "physics/passes.h"
+
+/* Per-particle quantities of i that are constant over its neighbours. */
+struct centre {
+  long i;
+  int phase;
+  double p_sign;                        /* +1, or -1 under tensile control */
+};
+
+/* Sums over the neighbours of fluid particle i. */
+struct fluid_sums {
+  double diff, drho_du, grad_p[3], visc[3], visc_other[3], mom_du[3], damper[3], sharp[3];
+};
+
+/* The pressure of other-phase neighbour j as particle i sees it with the density-weighted
+ * interface pressure p_ij = (rho_j p_i + rho_i p_j)/(rho_i + rho_j) (Hu & Adams 2006): the pair
+ * term p_j' + p_i equals 2 p_ij, so p_j' = 2 p_ij - p_i [Pa]. */
+static inline double other_phase_pressure(double pi, double rhoi, double pj, double rhoj) {
+  return ((rhoj - rhoi) * pi + 2.0 * rhoi * pj) / (rhoi + rhoj);
+}
+
+/* Loop over the neighbours of i; terms DU (delta-u), DAMP (acoustic damper: 1 symmetric,
+ * 2 difference form), PHASES (0: one fluid phase, so no pair is of the other-phase relation;
+ * 1: several phases; 2: several phases with the sharpness force) and the dimension are
+ * compile-time constants in each specialisation; so is DISS (bit 1: viscosity, bit 2: density
+ * diffusion; a term that is off has its pair terms compiled out). The sums are accumulated in
+ * locals and the arrays read through restrict pointers, so that nothing goes through memory
+ * inside the loop. */
+static inline __attribute__((always_inline)) void fluid_sums(const struct engine *e,
+                                                             const struct centre *ci,
+                                                             const struct neighbours *nb,
+                                                             struct fluid_sums *out, long *pairs,
+                                                             const int dim, const int DU,
+                                                             const int DAMP, const int PHASES,
+                                                             const int DISS) {
+  const struct parts *p = &e->p;
+  const struct work *w = &e->w;
+  const double *restrict x[3] = {p->x[0], p->x[1], p->x[2]}, *restrict v[3] = {p->v[0], p->v[1], p->v[2]};
+  const double *restrict du[3] = {w->du[0], w->du[1], w->du[2]};
+  const double *restrict grad_rho[3] = {w->grad_rho[0], w->grad_rho[1], w->grad_rho[2]};
+  const double *restrict rho = p->rho, *restrict pres = p->p, *restrict vol = w->vol, *restrict div = w->div;
+  const double *restrict rho_d = diffused_density(e);   /* the density the diffusion acts on */
+  const int *restrict phase = p->phase;
+  const long i = ci->i;
+  const int ph = ci->phase;
+  const double pi = pres[i], rhoi = rho[i], eta2 = 0.01 * e->h * e->h, support2 = e->kern.support2;
+  const double p_sign = ci->p_sign;
+  const int visc = DISS & 1, diff = DISS & 2;
+  const int weighted = PHASES && e->c->interface_pressure == IFACE_P_DENSITY_WEIGHTED;
+  const int visc_other = PHASES && visc && e->c->interface_viscosity == IFACE_VISC_HARMONIC;
+  const double rho0i = e->c->phases[ph].rho0, mui = e->c->phases[ph].viscosity;
+  double xi[3], vi[3], dui[3] = {0, 0, 0}, gri[3];
+  for (int d = 0; d < dim; d++) {
+    xi[d] = x[d][i];
+    vi[d] = v[d][i];
+    gri[d] = diff ? grad_rho[d][i] : 0.0;
+    if (DU) dui[d] = du[d][i];
+  }
+  struct fluid_sums s = {0};
+  long n_pairs = 0;
+  struct neighbours it = *nb;
+  for (long j; neighbours_next(&it, &j);) {
+    double dx[3], dv[3], r2 = 0, dvdx = 0;
+    for (int d = 0; d < dim; d++) {
+      dx[d] = xi[d] - x[d][j];
+      dv[d] = v[d][j] - vi[d];
+      r2 += dx[d] * dx[d];
+      dvdx += dv[d] * dx[d];
+    }
+    if (r2 >= support2) continue;
+    n_pairs++;
+    const double fv = kernel_f(&e->kern, r2) * vol[j];
+    const int rel = phase[j] == PHASE_WALL ? PAIR_WALL : (!PHASES || phase[j] == ph) ? PAIR_SAME : PAIR_OTHER;
+    /* other phase: a fluid particle of another phase, or a ghost standing for one (rho0 of
+     * another phase), so that fluid and ghost neighbours of a phase act alike */
+    const int other = weighted && (rel == PAIR_OTHER || (rel == PAIR_WALL && rho[j] != rho0i));
+    double pj = other ? other_phase_pressure(pi, rhoi, pres[j], rho[j]) : pres[j];
+    double psum = pj + p_sign * pi;
+    for (int d = 0; d < dim; d++) s.grad_p[d] += psum * fv * dx[d];
+    if (DU) {
+      const struct interface_weights *iw = &e->iface[rel];
+      double cii, cj, dui_g = 0, duj_g = 0;
+      interface_continuity_coefficients(iw, rhoi, rho[j], &cii, &cj);
+      for (int d = 0; d < dim; d++) {
+        dui_g += dui[d] * dx[d] * fv;
+        duj_g += du[d][j] * dx[d] * fv;
+      }
+      s.drho_du += cj * duj_g + cii * dui_g;
+      if (iw->kappa != 0)
+        for (int d = 0; d < dim; d++)
+          s.mom_du[d] += iw->kappa * (rhoi * vi[d] * dui_g + rho[j] * v[d][j] * duj_g);
+    }
+    if (DAMP == 1) {   /* symmetric form, D extended by zero outside the phase of i */
+      double dsum = (rel == PAIR_SAME ? div[j] : 0.0) + div[i];
+      for (int d = 0; d < dim; d++) s.damper[d] += dsum * fv * dx[d];
+    }
+    if (PHASES == 2 && rel == PAIR_OTHER)
+      for (int d = 0; d < dim; d++) s.sharp[d] -= (fabs(pi) + fabs(pres[j])) * fv * dx[d];
+    if (PHASES && rel == PAIR_OTHER) {
+      if (visc_other) {   /* mu_ij pi_ij is symmetric in i and j, so the pair's forces cancel */
+        const double mu_ij = harmonic_mean(mui, e->c->phases[phase[j]].viscosity), pi_ij = -dvdx / (r2 + eta2);
+        for (int d = 0; d < dim; d++) s.visc_other[d] += mu_ij * pi_ij * fv * dx[d];
+      }
+      continue;
+    }
+    if (visc) {
+      const double pi_ij = -dvdx / (r2 + eta2);   /* u_ji . r_ji / (r^2 + 0.01 h^2), r_ji = -dx */
+      for (int d = 0; d < dim; d++) s.visc[d] += pi_ij * fv * dx[d];
+    }
+    if (rel == PAIR_WALL) continue;
+    if (DAMP == 2)
+      for (int d = 0; d < dim; d++) s.damper[d] += (div[j] - div[i]) * fv * dx[d];
+    if (!diff) continue;
+    double gsum = 0;
+    for (int d = 0; d < dim; d++) gsum -= (gri[d] + grad_rho[d][j]) * dx[d];
+    s.diff -= (2.0 * (rho_d[j] - rho_d[i]) - gsum) * fv;
+  }
+  *out = s;
+  *pairs += n_pairs;
+}
+
+#define FLUID_SUMS(D, U, A, P, S) fluid_sums(e, ci, nb, s, pairs, D, U, A, P, S)
+#define DAMPED(D, U, P, S) \
+  (damp == 0 ? FLUID_SUMS(D, U, 0, P, S) : damp == 1 ? FLUID_SUMS(D, U, 1, P, S) : FLUID_SUMS(D, U, 2, P, S))
+#ifdef MPSPH_SINGLE_PHASE   /* benchmark build: the multiphase specialisations compiled out */
+#define PHASED(D, U, S) DAMPED(D, U, 0, S)
+#else
+#define PHASED(D, U, S) (phases == 0 ? DAMPED(D, U, 0, S) : phases == 1 ? DAMPED(D, U, 1, S) : DAMPED(D, U, 2, S))
+#endif
+
+/* The specialisations of fluid_sums for one DISS, in a function of their own (not inlined into
+ * one dispatcher with the other DISS values: there gcc compiled the loops of the ones with a term
+ * off about 70 % slower per pair than their instruction counts, measured with callgrind, imply). */
+#define DISPATCH_DISS(S) \
+  static __attribute__((noinline)) void dispatch_##S(const struct engine *e, const struct centre *ci, \
+                                                     const struct neighbours *nb, struct fluid_sums *s, \
+                                                     long *pairs, int du, int damp, int phases) { \
+    (void)phases; \
+    if (e->p.dim == 2) du ? PHASED(2, 1, S) : PHASED(2, 0, S); \
+    else du ? PHASED(3, 1, S) : PHASED(3, 0, S); \
+  }
+DISPATCH_DISS(0)
+DISPATCH_DISS(1)
+DISPATCH_DISS(2)
+DISPATCH_DISS(3)
+
+/* Call the specialisation of fluid_sums for the case's terms. */
+static void dispatch(const struct engine *e, const struct centre *ci, const struct neighbours *nb,
+                     struct fluid_sums *s, long *pairs) {
+  static void (*const by_diss[4])(const struct engine *, const struct centre *, const struct neighbours *,
+                                  struct fluid_sums *, long *, int, int, int) = {dispatch_0, dispatch_1,
+                                                                                 dispatch_2, dispatch_3};
+  unsigned f = e->features;
+  int du = (f & FEAT_DELTA_U) != 0;
+  int phases = e->c->n_phases == 1 ? 0 : (f & FEAT_SHARPNESS) ? 2 : 1;
+  int damp = !(f & FEAT_DAMPER) ? 0 : e->c->damper_form == DAMPER_SYMMETRIC ? 1 : 2;
+  if (!e->c->phases[ci->phase].incompressible) damp = 0;
+  int diss = ((f & FEAT_VISCOSITY) ? 1 : 0) | ((f & FEAT_DIFFUSION) ? 2 : 0);
+  by_diss[diss](e, ci, nb, s, pairs, du, damp, phases);
+}
+
+/* Combine the sums into drho/dt and du/dt of particle i. */
+static void finish(struct engine *e, const struct centre *ci, const struct fluid_sums *s) {
+  const struct parts *p = &e->p;
+  const struct phase *f = &e->c->phases[ci->phase];
+  const long i = ci->i;
+  double k_visc = e->c->alpha * e->h * f->c0 * f->rho0 + 2.0 * (p->dim + 2) * f->viscosity;
+  double k_visc_other = 2.0 * (p->dim + 2);   /* times mu_ij, inside visc_other */
+  double k_damp = e->damper_coef[1 + ci->phase], g[3];
+  body_acceleration(e, i, g);
+  /* delta-sph integrates m/V: its diffusion is -(V/rho^S) times the volume diffusion (paper 001
+   * Eq. 21 with the factor 2 restored), i.e. the density diffusion scaled by rho_i / rho^S_i */
+  double diffusion = e->c->delta * e->h * f->c0 * s->diff;
+  if (e->features & FEAT_SHEPARD) diffusion *= p->rho[i] / e->w.rho_s[i];
+  e->w.drho[i] = -p->rho[i] * e->w.div[i] + diffusion + s->drho_du;
+  for (int d = 0; d < p->dim; d++)
+    e->w.dv[d][i] = (-s->grad_p[d] + k_visc * s->visc[d] + k_visc_other * s->visc_other[d] + s->mom_du[d] +
+                     e->c->interface_sharpness * s->sharp[d]) / p->rho[i] + k_damp * s->damper[d] + g[d];
+}
+
+/* Phase and tensile-control sign of particle i. */
+static void centre_of(const struct engine *e, long i, struct centre *ci) {
+  ci->i = i;
+  ci->phase = e->p.phase[i];
+  int in_region = e->w.region && e->w.region[i] > 0;
+  ci->p_sign = (e->features & FEAT_TIC) && e->p.p[i] < 0 && !in_region ? -1.0 : 1.0;
+}
+
+/* Both right-hand sides of fluid particle i. */
+static void fluid_rhs(struct engine *e, long i, const struct neighbours *nb) {
+  struct centre ci;
+  struct fluid_sums sum;
+  centre_of(e, i, &ci);
+  dispatch(e, &ci, nb, &sum, &e->pass_pairs);
+  finish(e, &ci, &sum);
+}
+
+void pass_fluid_rhs(struct engine *e) { pass_for_each_owned(e, fluid_rhs, NULL); }

@@ -1,0 +1,120 @@
+/* pass_free_surface.c — free-surface detection of Marrone, Colagrossi, Le Touzé & Graziani 2010
+ * (JCP 229:3652), the method cited by paper 000:
+ *  1. lambda_i = smallest eigenvalue of B_i = sum_j r_ji (x) grad_i W_ij V_j over all neighbours
+ *     (every phase and the wall ghosts, so that walls and interfaces are not free surfaces);
+ *     lambda <= 0.2: free surface; lambda > 0.75: interior; otherwise a candidate;
+ *  2. normal n_i = nu/|nu|, nu = -B_i^-1 sum_j grad_i W_ij V_j; a candidate is a free-surface
+ *     particle unless a neighbour lies in the umbrella-shaped region around T = r_i + h n_i:
+ *     |r_ji| >= sqrt(2) h and |r_j - T| < h, or |r_ji| < sqrt(2) h and
+ *     |n.(r_j - T)| + |(r_j - T) - n (n.(r_j - T))| < h.
+ * The free-surface region is the detected particles plus those within surface_band h of one. */
+#include <math.h>
+#include "physics/linalg.h"
+#include "physics/passes.h"
+
+#define LAMBDA_SURFACE 0.2
+#define LAMBDA_INTERIOR 0.75
+#define SINGULAR_DET 1e-3   /* det(B) below which the normal is -sum grad W itself */
+
+/* B matrix and sum of kernel gradients of particle i over all neighbours. */
+static void moments(const struct engine *e, long i, const struct neighbours *nb, double *mt,
+                    double *sum_gw, long *pairs) {
+  const struct parts *p = &e->p;
+  const int dim = p->dim;
+  for (int k = 0; k < 9; k++) mt[k] = 0;
+  for (int d = 0; d < 3; d++) sum_gw[d] = 0;
+  struct neighbours it = *nb;
+  for (long j; neighbours_next(&it, &j);) {
+    double dx[3], r2 = pair_separation(p, dim, i, j, dx);
+    if (r2 >= e->kern.support2) continue;
+    double fv = kernel_f(&e->kern, r2) * e->w.vol[j];
+    for (int a = 0; a < dim; a++) {
+      sum_gw[a] += fv * dx[a];
+      for (int b = 0; b < dim; b++) mt[a * dim + b] -= fv * dx[a] * dx[b];
+    }
+    (*pairs)++;
+  }
+}
+
+/* Outward unit normal -B^-1 sum grad W (or -sum grad W where B is singular); 0 if undefined. */
+static void outward_normal(int dim, const double *mt, const double *sum_gw, double *n) {
+  double nu[3] = {0, 0, 0}, len = 0;
+  double det = linalg_solve(dim, mt, sum_gw, nu);
+  for (int d = 0; d < dim; d++) nu[d] = fabs(det) > SINGULAR_DET ? -nu[d] : -sum_gw[d];
+  for (int d = 0; d < dim; d++) len += nu[d] * nu[d];
+  len = sqrt(len);
+  for (int d = 0; d < dim; d++) n[d] = len > 0 ? nu[d] / len : 0;
+}
+
+/* 1 if some neighbour lies in the umbrella region above candidate i (so i is not on the surface). */
+static int umbrella_covered(const struct engine *e, long i, const struct neighbours *nb,
+                            const double *n) {
+  const struct parts *p = &e->p;
+  const int dim = p->dim;
+  const double h = e->h;
+  double t[3];
+  for (int d = 0; d < dim; d++) t[d] = p->x[d][i] + h * n[d];
+  struct neighbours it = *nb;
+  for (long j; neighbours_next(&it, &j);) {
+    double rij2 = 0, rt[3], rt2 = 0, rn = 0;
+    for (int d = 0; d < dim; d++) {
+      double dij = p->x[d][j] - p->x[d][i];
+      rij2 += dij * dij;
+      rt[d] = p->x[d][j] - t[d];
+      rt2 += rt[d] * rt[d];
+      rn += rt[d] * n[d];
+    }
+    if (rij2 >= e->kern.support2) continue;
+    if (rij2 >= 2 * h * h) {
+      if (rt2 < h * h) return 1;
+    } else if (fabs(rn) + sqrt(fmax(rt2 - rn * rn, 0.0)) < h) {
+      return 1;
+    }
+  }
+  return 0;
+}
+
+/* Classify owned fluid particle i. */
+static void detect(struct engine *e, long i, const struct neighbours *nb) {
+  const int dim = e->p.dim;
+  double mt[9], sum_gw[3], n[3];
+  moments(e, i, nb, mt, sum_gw, &e->pass_pairs);
+  double lambda = linalg_min_eigenvalue(dim, mt);
+  outward_normal(dim, mt, sum_gw, n);
+  int surface = lambda <= LAMBDA_SURFACE;
+  if (!surface && lambda <= LAMBDA_INTERIOR) surface = !umbrella_covered(e, i, nb, n);
+  e->w.surface[i] = surface;
+  e->w.lambda[i] = lambda;
+  for (int d = 0; d < dim; d++) e->w.normal[d][i] = n[d];
+  e->n_surface += surface;
+}
+
+/* A wall ghost is never on the free surface. */
+static void clear_wall(struct engine *e, long i, const struct neighbours *nb) {
+  (void)nb;
+  e->w.surface[i] = 0;
+  e->w.region[i] = 0;
+  e->w.lambda[i] = 1;
+}
+
+void pass_free_surface(struct engine *e) {
+  e->n_surface = 0;
+  pass_for_each_owned(e, detect, clear_wall);
+}
+
+/* 1 if fluid particle i lies within surface_band h of a detected particle (or is one). */
+static void band_of(struct engine *e, long i, const struct neighbours *nb) {
+  const struct parts *p = &e->p;
+  double band = fmin(e->c->surface_band * e->h, e->kern.support), band2 = band * band;
+  int in = e->w.surface[i] > 0;
+  struct neighbours it = *nb;
+  for (long j; !in && neighbours_next(&it, &j);) {
+    if (e->w.surface[j] <= 0) continue;
+    double r2 = 0;
+    for (int d = 0; d < p->dim; d++) r2 += (p->x[d][i] - p->x[d][j]) * (p->x[d][i] - p->x[d][j]);
+    in = r2 < band2;
+  }
+  e->w.region[i] = in;
+}
+
+void pass_surface_band(struct engine *e) { pass_for_each_owned(e, band_of, NULL); }

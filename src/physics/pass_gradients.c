@@ -1,0 +1,110 @@
+/* pass_gradients.c — the first pair pass of every stage:
+ *  - with density diffusion, the renormalised density gradient (paper 000 Eq. 7, Randles &
+ *    Libersky), same phase only:
+ *    <grad rho>_i = L_i sum_j (rho_j - rho_i) grad_i W_ij V_j, L_i = [sum_j r_ji (x) grad_i W_ij V_j]^-1;
+ *    a near-singular matrix falls back to L = I;
+ *  - velocity divergence over all neighbours: <div u>_i = sum_j w_ij u_ji . grad_i W_ij V_j, w_ij = 1
+ *    except with the density-weighted interface pressure for j of another phase,
+ *    w_ij = 2 rho_j / (rho_i + rho_j), the continuity that matches its pair pressure 2 p_ij in the
+ *    energy balance (doc/theory.md section 3);
+ *  - with shifting, sum_j grad_i W_ij V_j over all neighbours, turned into du (shifting.c). */
+#include <math.h>
+#include "physics/linalg.h"
+#include "physics/passes.h"
+
+#define RENORM_MIN_DET 0.1   /* det of the matrix below which L falls back to the identity */
+
+/* Sums of particle i; inlined with literal dim, shift, multi (several phases) and renorm (the
+ * density gradient, read only by the density diffusion) so that the loops specialise. The arrays
+ * are read through restrict pointers and the sums kept in locals. Returns 1 if the
+ * renormalisation fell back to the identity. */
+static inline __attribute__((always_inline)) int gradients_of(struct engine *e, long i,
+                                                              const struct neighbours *nb,
+                                                              long *pairs, const int dim,
+                                                              const int shift, const int multi,
+                                                              const int renorm) {
+  const struct parts *p = &e->p;
+  const double *restrict x[3] = {p->x[0], p->x[1], p->x[2]}, *restrict v[3] = {p->v[0], p->v[1], p->v[2]};
+  const double *restrict vol = e->w.vol, *restrict rho = diffused_density(e);
+  const int *restrict phase = p->phase;
+  const int ph = phase[i];
+  const double support2 = e->kern.support2, rhoi = rho[i], *restrict rho_state = p->rho;
+  const int weighted = multi && e->c->interface_pressure == IFACE_P_DENSITY_WEIGHTED;
+  double xi[3], vi[3], mt[9] = {0}, g[3] = {0}, sum_gw[3] = {0}, div = 0, out[3];
+  for (int d = 0; d < dim; d++) {
+    xi[d] = x[d][i];
+    vi[d] = v[d][i];
+  }
+  int n_nb = 0;
+  struct neighbours it = *nb;
+  for (long j; neighbours_next(&it, &j);) {
+    double dx[3], r2 = 0, dvdx = 0;
+    for (int d = 0; d < dim; d++) {
+      dx[d] = xi[d] - x[d][j];
+      r2 += dx[d] * dx[d];
+      dvdx += (v[d][j] - vi[d]) * dx[d];
+    }
+    if (r2 >= support2) continue;
+    double fv = kernel_f(&e->kern, r2) * vol[j];
+    if (weighted && phase[j] != ph && phase[j] != PHASE_WALL)
+      div += fv * dvdx * 2.0 * rho_state[j] / (rho_state[i] + rho_state[j]);
+    else
+      div += fv * dvdx;
+    n_nb++;
+    if (shift)
+      for (int d = 0; d < dim; d++) sum_gw[d] += fv * dx[d];
+    if (!renorm || (multi ? phase[j] != ph : phase[j] == PHASE_WALL)) continue;
+    double drho = rho[j] - rhoi;
+    for (int a = 0; a < dim; a++) {
+      g[a] += drho * fv * dx[a];
+      for (int b = 0; b < dim; b++) mt[a * dim + b] -= fv * dx[a] * dx[b];  /* (M)_ab = B_ba */
+    }
+  }
+  *pairs += n_nb;
+  int fallback = 0;
+  if (renorm) {
+    double det = linalg_solve(dim, mt, g, out);
+    fallback = !(fabs(det) >= RENORM_MIN_DET);
+    for (int d = 0; d < dim; d++) e->w.grad_rho[d][i] = fallback ? g[d] : out[d];
+  }
+  e->w.div[i] = div;
+  if (shift) shifting_velocity(e, i, sum_gw, n_nb);
+  return fallback;
+}
+
+void pass_volumes(struct engine *e) {
+  const struct parts *p = &e->p;
+  for (long i = 0, n = p->n_owned + p->n_halo; i < n; i++) e->w.vol[i] = p->m[i] / p->rho[i];
+}
+
+/* Zero the gradient-pass results of a wall ghost. */
+static void clear_ghost(struct engine *e, long i, const struct neighbours *nb) {
+  (void)nb;
+  for (int d = 0; d < e->p.dim; d++) {
+    if (e->w.grad_rho[d]) e->w.grad_rho[d][i] = 0;
+    if (e->w.du[d]) e->w.du[d][i] = 0;
+  }
+  e->w.div[i] = 0;
+}
+
+#define GRADIENTS_OF(D, S, M) \
+  (renorm ? gradients_of(e, i, nb, pairs, D, S, M, 1) : gradients_of(e, i, nb, pairs, D, S, M, 0))
+#ifdef MPSPH_SINGLE_PHASE   /* benchmark build: the multiphase specialisations compiled out */
+#define PHASED(D, S) GRADIENTS_OF(D, S, 0)
+#else
+#define PHASED(D, S) (multi ? GRADIENTS_OF(D, S, 1) : GRADIENTS_OF(D, S, 0))
+#endif
+
+/* The specialisation of gradients_of for the dimension, shifting, the number of phases and the
+ * density gradient. */
+static void gradients(struct engine *e, long i, const struct neighbours *nb) {
+  long *pairs = &e->pass_pairs;
+  int shift = (e->features & FEAT_SHIFT) != 0, multi = e->c->n_phases > 1, fallback;
+  const int renorm = (e->features & FEAT_DIFFUSION) != 0;
+  (void)multi;
+  if (e->p.dim == 2) fallback = shift ? PHASED(2, 1) : PHASED(2, 0);
+  else fallback = shift ? PHASED(3, 1) : PHASED(3, 0);
+  e->renorm_fallbacks += fallback;
+}
+
+void pass_gradients(struct engine *e) { pass_for_each_owned(e, gradients, clear_ghost); }

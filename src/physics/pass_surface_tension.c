@@ -1,0 +1,119 @@
+/* pass_surface_tension.c — continuum surface force between the fluid phases (Brackbill et al.
+ * 1992, J. Comput. Phys. 100:335) in SPH, for fluid i and fluid neighbours j (wall ghosts
+ * excluded; all other phases count as one):
+ *   grad chi_i = sum_{j other phase} grad_i W_ij V_j                (colour gradient, Morris 2000),
+ *   n_i = grad chi_i / |grad chi_i|  where |grad chi_i| h >= 0.01, else n_i = 0,
+ *   G_i = sum_{j: n_j != 0} (phi_ij n_j - n_i) (x) grad_i W_ij V_j,  phi_ij = +1 same phase, -1 other,
+ *   B_i = sum_{j: n_j != 0} r_ji (x) grad_i W_ij V_j,
+ *   kappa_i = trace(G_i B_i^-1)   (dim trace G / trace B, Adami et al. 2010, where det B < 0.1),
+ *   du_i/dt += -sigma kappa_i n_i |grad chi_i| / rho_i.
+ * n points toward the other phase and kappa = div n, so the force points to the centre of
+ * curvature on both sides. The force per volume is the same on both sides of the interface
+ * (the colour is not density-weighted as in Adami et al. 2010 and paper 004 Eq. 11): it is the
+ * weighting that balances the pressure gradient -sum_j (p_j + p_i) grad_i W_ij V_j of this
+ * scheme, which is not density-weighted either. See doc/theory.md section 4d. */
+#include <math.h>
+#include "physics/linalg.h"
+#include "physics/passes.h"
+
+#define COLOUR_GRAD_MIN 0.01     /* |grad chi| h below which a particle has no interface normal */
+#define CURVATURE_MIN_DET 0.1    /* det of B below which the curvature takes Adami's scalar form */
+
+/* The colour gradient of owned fluid particle i, grad chi_i = sum_{j other phase} grad_i W_ij V_j
+ * [1/m]. Returns the number of pairs within the support. */
+static long colour_gradient(const struct engine *e, long i, const struct neighbours *nb, double *grad_chi) {
+  const struct parts *p = &e->p;
+  const int dim = p->dim, ph = p->phase[i];
+  long pairs = 0;
+  for (int d = 0; d < dim; d++) grad_chi[d] = 0;
+  struct neighbours it = *nb;
+  for (long j; neighbours_next(&it, &j);) {
+    double dx[3], r2 = pair_separation(p, dim, i, j, dx);
+    if (r2 >= e->kern.support2) continue;
+    pairs++;
+    if (p->phase[j] == ph || p->phase[j] == PHASE_WALL) continue;
+    double fv = kernel_f(&e->kern, r2) * e->w.vol[j];
+    for (int d = 0; d < dim; d++) grad_chi[d] += fv * dx[d];
+  }
+  return pairs;
+}
+
+/* Length of a vector of dim components. */
+static double norm_of(const double *a, int dim) {
+  double s = 0;
+  for (int d = 0; d < dim; d++) s += a[d] * a[d];
+  return sqrt(s);
+}
+
+/* trace(G B^-1) for symmetric B (row a of G solved against B: trace(A^T) with A^T = B^-1 G^T),
+ * or dim trace(G) / trace(B) where det B < CURVATURE_MIN_DET; 0 without neighbours. */
+static double renormalised_trace(int dim, const double *g, const double *b) {
+  double tg = 0, tb = 0, x[3], tr = 0, det = 1;
+  for (int a = 0; a < dim; a++) {
+    tg += g[a * dim + a];
+    tb += b[a * dim + a];
+    det = linalg_solve(dim, b, g + a * dim, x);
+    tr += x[a];
+  }
+  if (det >= CURVATURE_MIN_DET) return tr;
+  return tb > 0 ? dim * tg / tb : 0.0;
+}
+
+/* Normal and |grad chi| of owned fluid particle i. */
+static void interface_normal_of(struct engine *e, long i, const struct neighbours *nb) {
+  const int dim = e->p.dim;
+  double grad_chi[3];
+  e->pass_pairs += colour_gradient(e, i, nb, grad_chi);
+  double g = norm_of(grad_chi, dim);
+  int on = g * e->h >= COLOUR_GRAD_MIN;
+  e->w.colour_grad[i] = on ? g : 0.0;
+  for (int d = 0; d < dim; d++) e->w.interface_normal[d][i] = on ? grad_chi[d] / g : 0.0;
+}
+
+/* Wall ghosts carry no interface normal. */
+static void clear_ghost(struct engine *e, long i, const struct neighbours *nb) {
+  (void)nb;
+  e->w.colour_grad[i] = 0;
+  e->w.kappa_curvature[i] = 0;
+  for (int d = 0; d < e->p.dim; d++) e->w.interface_normal[d][i] = 0;
+}
+
+void pass_interface_normals(struct engine *e) { pass_for_each_owned(e, interface_normal_of, clear_ghost); }
+
+/* Curvature div n of owned fluid particle i with a normal [1/m]: with the gradient sums
+ * G = sum_j (phi_ij n_j - n_i) (x) grad_i W_ij V_j and B = sum_j r_ji (x) grad_i W_ij V_j over the
+ * neighbours that have a normal, div n = trace(G B^-1) (exact for a linear normal field, however
+ * one-sided the neighbours), or dim trace(G) / trace(B) where det B < CURVATURE_MIN_DET.
+ * Counts the pairs into *pairs. */
+static double curvature_of(const struct engine *e, long i, const struct neighbours *nb, long *pairs) {
+  const struct parts *p = &e->p;
+  double *const *nrm = e->w.interface_normal;
+  const int dim = p->dim, ph = p->phase[i];
+  double g[9] = {0}, b[9] = {0};   /* row-major dim x dim */
+  struct neighbours it = *nb;
+  for (long j; neighbours_next(&it, &j);) {
+    if (p->phase[j] == PHASE_WALL) continue;
+    double dx[3], r2 = pair_separation(p, dim, i, j, dx), phi = p->phase[j] == ph ? 1.0 : -1.0, nj2 = 0;
+    for (int d = 0; d < dim; d++) nj2 += nrm[d][j] * nrm[d][j];
+    if (r2 >= e->kern.support2 || nj2 == 0) continue;
+    (*pairs)++;
+    double fv = kernel_f(&e->kern, r2) * e->w.vol[j];
+    for (int a = 0; a < dim; a++)
+      for (int c = 0; c < dim; c++) {
+        g[a * dim + c] += (phi * nrm[a][j] - nrm[a][i]) * fv * dx[c];
+        b[a * dim + c] -= dx[a] * fv * dx[c];
+      }
+  }
+  return renormalised_trace(dim, g, b);
+}
+
+/* Curvature and CSF acceleration of owned fluid particle i. */
+static void surface_tension_of(struct engine *e, long i, const struct neighbours *nb) {
+  struct work *w = &e->w;
+  double kappa = w->colour_grad[i] > 0 ? curvature_of(e, i, nb, &e->pass_pairs) : 0.0;
+  double a = -e->c->surface_tension * kappa * w->colour_grad[i] / e->p.rho[i];
+  w->kappa_curvature[i] = kappa;
+  for (int d = 0; d < e->p.dim; d++) w->dv[d][i] += a * w->interface_normal[d][i];
+}
+
+void pass_surface_tension(struct engine *e) { pass_for_each_owned(e, surface_tension_of, NULL); }

@@ -1,0 +1,170 @@
+/* pass_riemann.c — the pair terms of scheme riemann (paper 002 Eqs. 6-9 and 12), for owned fluid
+ * particle i over its neighbours j (both fluid phases and the wall ghosts):
+ *   drho_i/dt = 2 rho_i sum_j V_j (v_i - v*_ij) . grad_i W_ij
+ *   dv_i/dt   = -(2/rho_i) sum_j V_j p*_ij grad_i W_ij
+ *               + (2/rho_i) sum_j V_j eta_ij v_ij F_ij + g + f_potential
+ * with grad_i W_ij = F_ij (r_i - r_j), F = W'(r)/r, V_j = m_j/rho_j, eta_ij = 2 eta_i eta_j /
+ * (eta_i + eta_j), p* from riemann_pressure() with U_L - U_R = (v_j - v_i).e_ij, e_ij = (r_i -
+ * r_j)/r_ij, and the interface velocity of Eq. 9 with the sign of notes seed-002 A1,
+ *   v*_ij = (Z_i v_i + Z_j v_j)/(Z_i + Z_j) - e_ij (p_i - p_j)/(Z_i + Z_j),   Z = rho c0,
+ * so that (v_i - v*_ij).grad_i W_ij = F_ij [Z_j v_ij.(r_i - r_j) + r_ij (p_i - p_j)]/(Z_i + Z_j).
+ * A wall ghost j (fixed walls) carries the one-sided dummy state of i (Eq. 20 with the corrections
+ * A2, A3 of the notes): p_j = p_i + rho_i max(0, a_i.(r_j - r_i)), a_i = g + f_potential, the density
+ * of i's EOS at p_j, i's sound speed and viscosity, and the velocity -v_i (no slip) or v_i with its
+ * component along the ghost's mirror direction n reversed (free slip), with volume dx^dim.
+ * Transport velocity (Eq. 12, light phases, notes A10): a_tv,i = -(2 p0_tv/rho_i) sum_j V_j grad_i W_ij. */
+#include <math.h>
+#include "physics/eos.h"
+#include "physics/passes.h"
+#include "physics/riemann.h"
+
+/* The quantities of particle i that are constant over its neighbours. */
+struct rcentre {
+  long i;
+  int phase;
+  double x[3], v[3], a[3], rho, p, z, c, eta;
+};
+
+/* The dummy pressure [Pa] and velocity vj [m/s] of wall ghost j for particle i, dx = r_i - r_j. */
+static inline double wall_dummy(const struct engine *e, const struct rcentre *ci, long j, const double *dx,
+                                double *vj, const int dim) {
+  const struct parts *p = &e->p;
+  double head = 0, n2 = 0, vn = 0;
+  for (int d = 0; d < dim; d++) {
+    head -= ci->a[d] * dx[d];
+    n2 += p->mirror[d][j] * p->mirror[d][j];
+    vn += ci->v[d] * p->mirror[d][j];
+  }
+  int no_slip = e->c->walls[p->wall[j]].slip == SLIP_NO;
+  for (int d = 0; d < dim; d++) vj[d] = no_slip ? -ci->v[d] : ci->v[d] - 2.0 * vn * p->mirror[d][j] / n2;
+  return ci->p + ci->rho * fmax(0.0, head);
+}
+
+/* The Riemann sums of i: the momentum sums (pressure, viscous) when MOMENTUM, else the continuity
+ * sum; dim is a compile-time constant of each specialisation. */
+static inline __attribute__((always_inline)) void riemann_sums(const struct engine *e, const struct rcentre *ci,
+                                                               const struct neighbours *nb, double *grad_p,
+                                                               double *visc, double *drho, long *pairs,
+                                                               const int dim, const int MOMENTUM) {
+  const struct parts *p = &e->p;
+  const struct phase *phases = e->c->phases;
+  const double *restrict x[3] = {p->x[0], p->x[1], p->x[2]}, *restrict v[3] = {p->v[0], p->v[1], p->v[2]};
+  const double *restrict rho = p->rho, *restrict pres = p->p, *restrict vol = e->w.vol;
+  const int *restrict phase = p->phase;
+  const double support2 = e->kern.support2;
+  double gp[3] = {0, 0, 0}, vs[3] = {0, 0, 0}, dr = 0;
+  long n = 0;
+  struct neighbours it = *nb;
+  for (long j; neighbours_next(&it, &j);) {
+    double dx[3], r2 = 0, vj[3] = {0, 0, 0}, vdx = 0;
+    for (int d = 0; d < dim; d++) {
+      dx[d] = ci->x[d] - x[d][j];
+      r2 += dx[d] * dx[d];
+    }
+    if (r2 >= support2 || r2 <= 0) continue;
+    n++;
+    const int wall = phase[j] == PHASE_WALL;
+    double pj = pres[j], rhoj = rho[j], cj, etaj;
+    if (wall) {
+      pj = wall_dummy(e, ci, j, dx, vj, dim);
+      rhoj = eos_density(&phases[ci->phase], pj);
+      cj = ci->c;
+      etaj = ci->eta;
+    } else {
+      for (int d = 0; d < dim; d++) vj[d] = v[d][j];
+      cj = phases[phase[j]].c0;
+      etaj = phases[phase[j]].viscosity;
+    }
+    for (int d = 0; d < dim; d++) vdx += (ci->v[d] - vj[d]) * dx[d];
+    const double fv = kernel_f(&e->kern, r2) * (wall ? e->vol0 : vol[j]), r = sqrt(r2), zj = rhoj * cj;
+    if (MOMENTUM) {
+      double pstar = riemann_pressure(ci->z, ci->p, zj, pj, -vdx / r, (ci->z + zj) / (ci->rho + rhoj));
+      double eta = harmonic_mean(ci->eta, etaj);
+      for (int d = 0; d < dim; d++) {
+        gp[d] += pstar * fv * dx[d];
+        vs[d] += eta * fv * (ci->v[d] - vj[d]);
+      }
+    } else {
+      dr += fv * (zj * vdx + r * (ci->p - pj)) / (ci->z + zj);
+    }
+  }
+  for (int d = 0; d < dim; d++) {
+    grad_p[d] = gp[d];
+    visc[d] = vs[d];
+  }
+  *drho = dr;
+  *pairs += n;
+}
+
+/* The constants of particle i. */
+static void centre_of(const struct engine *e, long i, struct rcentre *ci) {
+  const struct parts *p = &e->p;
+  const struct phase *f = &e->c->phases[p->phase[i]];
+  ci->i = i;
+  ci->phase = p->phase[i];
+  for (int d = 0; d < 3; d++) {
+    ci->x[d] = d < p->dim ? p->x[d][i] : 0.0;
+    ci->v[d] = d < p->dim ? p->v[d][i] : 0.0;
+    ci->a[d] = 0.0;
+  }
+  body_acceleration(e, i, ci->a);
+  ci->rho = p->rho[i];
+  ci->p = p->p[i];
+  ci->c = f->c0;
+  ci->z = ci->rho * ci->c;
+  ci->eta = f->viscosity;
+}
+
+/* The sums of i in the specialisation for the dimension. */
+static void sums_of(struct engine *e, const struct rcentre *ci, const struct neighbours *nb, double *grad_p,
+                    double *visc, double *drho, int momentum) {
+  long *pairs = &e->pass_pairs;
+  if (e->p.dim == 2) momentum ? riemann_sums(e, ci, nb, grad_p, visc, drho, pairs, 2, 1)
+                              : riemann_sums(e, ci, nb, grad_p, visc, drho, pairs, 2, 0);
+  else momentum ? riemann_sums(e, ci, nb, grad_p, visc, drho, pairs, 3, 1)
+                : riemann_sums(e, ci, nb, grad_p, visc, drho, pairs, 3, 0);
+}
+
+/* du/dt of fluid particle i. */
+static void momentum_of(struct engine *e, long i, const struct neighbours *nb) {
+  struct rcentre ci;
+  double grad_p[3], visc[3], drho;
+  centre_of(e, i, &ci);
+  sums_of(e, &ci, nb, grad_p, visc, &drho, 1);
+  for (int d = 0; d < e->p.dim; d++) e->w.dv[d][i] = 2.0 * (visc[d] - grad_p[d]) / ci.rho + ci.a[d];
+}
+
+/* drho/dt of fluid particle i. */
+static void continuity_of(struct engine *e, long i, const struct neighbours *nb) {
+  struct rcentre ci;
+  double grad_p[3], visc[3], drho;
+  centre_of(e, i, &ci);
+  sums_of(e, &ci, nb, grad_p, visc, &drho, 0);
+  e->w.drho[i] = 2.0 * ci.rho * drho;
+}
+
+void pass_riemann_momentum(struct engine *e) { pass_for_each_owned(e, momentum_of, NULL); }
+
+void pass_riemann_continuity(struct engine *e) { pass_for_each_owned(e, continuity_of, NULL); }
+
+/* Transport-velocity acceleration of fluid particle i into dv (0 for heavy phases). */
+static void transport_of(struct engine *e, long i, const struct neighbours *nb) {
+  const struct parts *p = &e->p;
+  const int dim = p->dim;
+  double s[3] = {0, 0, 0};
+  if (riemann_light_phase(e->c, p->phase[i])) {
+    long n = 0;
+    struct neighbours it = *nb;
+    for (long j; neighbours_next(&it, &j);) {
+      double dx[3], r2 = pair_separation(p, dim, i, j, dx);
+      if (r2 >= e->kern.support2) continue;
+      double fv = kernel_f(&e->kern, r2) * e->w.vol[j];
+      for (int d = 0; d < dim; d++) s[d] += fv * dx[d];
+      n++;
+    }
+    e->pass_pairs += n;
+  }
+  for (int d = 0; d < dim; d++) e->w.dv[d][i] = -2.0 * e->tv_pressure * s[d] / p->rho[i];
+}
+
+void pass_transport_acceleration(struct engine *e) { pass_for_each_owned(e, transport_of, NULL); }
