@@ -51,13 +51,15 @@ void halo_update(struct halo *h, const struct parts *p, double *const *fields, i
  *  neighbouring ranks (then nothing is sent or changed), or -1. */
 int64_t halo_migrate(struct halo *h, const struct space *s, struct parts *p);
 
-/** Values per particle in a full-particle message. */
-int parts_packed_size(const struct parts *p);
+/** Values per particle in a particle message of operation op (PART_HALO or PART_MIGRATE): the
+ *  components of the fields of parts_fields that op carries. */
+int parts_packed_size(const struct parts *p, unsigned op);
 
-/** Pack particle i into buf (parts_packed_size doubles). */
-void parts_pack(const struct parts *p, long i, double *buf);
+/** Pack particles index[0..n) into rows 0..n-1 of buf (parts_packed_size(p, op) doubles each);
+ *  field by field, each a loop over the particles. */
+void parts_pack(const struct parts *p, unsigned op, const long *index, long n, double *buf);
 
-/** Unpack a particle from buf into slot j. */
-void parts_unpack(struct parts *p, long j, const double *buf);
+/** Unpack rows 0..n-1 of buf (packed by parts_pack with the same op) into slots first.. of p. */
+void parts_unpack(struct parts *p, unsigned op, long first, long n, const double *buf);
 
 #endif

@@ -24,7 +24,8 @@
 #define MPSPH_IO_MAX_BYTES (1L << 30)
 #endif
 
-#define MAX_FIELDS 9   /* datasets of /particles in a checkpoint */
+#define MAX_FIELDS PARTS_MAX_FIELDS   /* datasets of /particles in a checkpoint, at most */
+#define MAX_FIELD_PATH 64              /* bytes of a dataset's path */
 
 /* This rank's rows of a global dataset, and how many collective transfer calls each makes. */
 struct layout {
@@ -37,7 +38,7 @@ struct layout {
 
 /* One dataset and the arrays its rows come from (go to); vectors (ncomp > 1) are double. */
 struct field {
-  const char *name;       /* full path in the file */
+  char name[MAX_FIELD_PATH]; /* full path in the file */
   hid_t file_type, mem_type;
   size_t size;            /* bytes per component */
   int ncomp;              /* 1 for scalars, dim for vectors */
@@ -118,36 +119,41 @@ static void read_layout(hsize_t total, int whole, size_t row_bytes, MPI_Comm com
   layout_calls(L, row_bytes, comm);
 }
 
-static struct field vector_field(const char *name, double *const *comp, int dim) {
-  return (struct field){name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, sizeof(double), dim,
-                        {comp[0], comp[1], dim > 2 ? comp[2] : NULL}};
+/* A one-component dataset name of file_type from the array a (mem_type, size bytes each). */
+static struct field scalar_field(const char *name, hid_t file_type, hid_t mem_type, size_t size,
+                                 void *a) {
+  struct field f = {"", file_type, mem_type, size, 1, {a}};
+  snprintf(f.name, sizeof f.name, "%s", name);
+  return f;
 }
 
 static struct field real_field(const char *name, double *a) {
-  return (struct field){name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, sizeof(double), 1, {a}};
-}
-
-static struct field int_field(const char *name, int *a) {
-  return (struct field){name, H5T_STD_I32LE, H5T_NATIVE_INT, sizeof(int), 1, {a}};
+  return scalar_field(name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, sizeof(double), a);
 }
 
 static struct field long_field(const char *name, hid_t mem_type, void *a) {
-  return (struct field){name, H5T_STD_I64LE, mem_type, sizeof(int64_t), 1, {a}};
+  return scalar_field(name, H5T_STD_I64LE, mem_type, sizeof(int64_t), a);
 }
 
-/* The /particles datasets of p (the contracted ones; with ghosts, also mirror and wall). */
-static int particle_fields(const struct parts *p, int ghosts, struct field *f) {
+/* The dataset /particles/<name> of the particle field pf of p (vectors: dim columns). */
+static struct field table_field(const struct parts *p, const struct part_field *pf) {
+  struct field f = pf->type == PART_INT
+                       ? scalar_field("", H5T_STD_I32LE, H5T_NATIVE_INT, sizeof(int), NULL)
+                   : pf->type == PART_INT64 ? long_field("", H5T_NATIVE_INT64, NULL)
+                                            : real_field("", NULL);
+  snprintf(f.name, sizeof f.name, "/particles/%s", pf->name);
+  f.ncomp = parts_field_ncomp(p, pf);
+  for (int k = 0; k < f.ncomp; k++) f.comp[k] = parts_field_array(p, pf, k);
+  return f;
+}
+
+/* The /particles datasets of p, from parts_fields: the snapshot fields; with checkpoint, also the
+ * checkpoint-only ones (walls-only fields only when p has walls). */
+static int particle_fields(const struct parts *p, int checkpoint, struct field *f) {
+  unsigned ops = PART_SNAPSHOT | (checkpoint ? PART_CHECKPOINT : 0);
   int n = 0;
-  f[n++] = vector_field("/particles/position", p->x, p->dim);
-  f[n++] = vector_field("/particles/velocity", p->v, p->dim);
-  f[n++] = real_field("/particles/density", p->rho);
-  f[n++] = real_field("/particles/pressure", p->p);
-  f[n++] = real_field("/particles/mass", p->m);
-  f[n++] = int_field("/particles/phase", p->phase);
-  f[n++] = long_field("/particles/id", H5T_NATIVE_INT64, p->id);
-  if (!ghosts) return n;
-  f[n++] = vector_field("/particles/mirror", p->mirror, p->dim);
-  f[n++] = int_field("/particles/wall", p->wall);
+  for (const struct part_field *pf = parts_fields; pf < parts_fields + parts_n_fields; pf++)
+    if ((pf->ops & ops) && parts_has_field(p, pf)) f[n++] = table_field(p, pf);
   return n;
 }
 
@@ -460,7 +466,7 @@ static int write_file(const char *tmp, const struct snapshot_info *info, const s
   struct field fields[MAX_FIELDS];
   struct layout L;
   hid_t file, g;
-  int n = particle_fields(p, extra && p->wall, fields);
+  int n = particle_fields(p, extra != NULL, fields);
   write_layout(p->n_owned, (size_t)p->dim * sizeof(double), comm, &L);
   int st = agree(open_file(tmp, 1, comm, &file, err, len), comm, err, len);
   if (st) return st;
@@ -510,7 +516,7 @@ static double file_bytes(const struct snapshot_info *info, const struct parts *p
                          const struct checkpoint_extra *extra, MPI_Comm comm) {
   struct field fields[MAX_FIELDS];
   double row = 0, rows = (double)p->n_owned, total;
-  int n = particle_fields(p, extra && p->wall, fields);
+  int n = particle_fields(p, extra != NULL, fields);
   for (int k = 0; k < n; k++) row += (double)fields[k].size * fields[k].ncomp;
   MPI_Allreduce(&rows, &total, 1, MPI_DOUBLE, MPI_SUM, comm);
   double text = (info->case_yaml ? strlen(info->case_yaml) : 0) +
@@ -633,13 +639,13 @@ static int read_particles(hid_t file, struct parts *p, hid_t dxpl, MPI_Comm comm
               (long long)total);
   if (g >= 0) H5Gclose(g);
   if (agree(st, comm, err, len)) return 3;
-  int n = particle_fields(p, p->wall != NULL, fields);
+  int n = particle_fields(p, 1, fields);
   if (check_rows(file, fields, n, (long)total, comm, err, len)) return 3;  /* before reserving */
   read_layout((hsize_t)total, 0, sizeof(double), comm, &L);
   parts_reserve(p, (long)L.n);
   p->n_owned = (long)L.n;
   p->n_halo = 0;
-  particle_fields(p, p->wall != NULL, fields);   /* the arrays may have moved */
+  particle_fields(p, 1, fields);   /* the arrays may have moved */
   for (int k = 0; k < n && !st; k++)
     st = read_field(file, &fields[k], (long)total, 0, dxpl, NULL, comm, err, len);
   return st;

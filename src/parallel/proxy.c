@@ -8,34 +8,51 @@
 
 enum { TAG_COUNT = 11, TAG_PARTS = 12, TAG_FIELDS = 13, TAG_MIGRATE_COUNT = 14, TAG_MIGRATE = 15 };
 
-int parts_packed_size(const struct parts *p) {
-  return 2 * p->dim + 6 + (p->wall ? p->dim + 1 : 0);
+int parts_packed_size(const struct parts *p, unsigned op) {
+  int w = 0;
+  for (const struct part_field *f = parts_fields; f < parts_fields + parts_n_fields; f++)
+    if ((f->ops & op) && parts_has_field(p, f)) w += parts_field_ncomp(p, f);
+  return w;
 }
 
-void parts_pack(const struct parts *p, long i, double *b) {
-  for (int d = 0; d < p->dim; d++) { *b++ = p->x[d][i]; *b++ = p->v[d][i]; }
-  *b++ = p->rho[i];
-  *b++ = p->p[i];
-  *b++ = p->m[i];
-  *b++ = (double)p->phase[i];
-  *b++ = (double)p->id[i];
-  *b++ = (double)p->cell[i];
-  if (!p->wall) return;
-  for (int d = 0; d < p->dim; d++) *b++ = p->mirror[d][i];
-  *b = (double)p->wall[i];
+/* Column col of rows of width w in b from particles index[0..n) of the array a of type T. */
+#define PACK_COLUMN(T, a)                                                         \
+  do {                                                                            \
+    const T *src = (const T *)(a);                                                \
+    for (long r = 0; r < n; r++) b[r * w + col] = (double)src[index[r]];          \
+  } while (0)
+
+void parts_pack(const struct parts *p, unsigned op, const long *index, long n, double *b) {
+  int w = parts_packed_size(p, op), col = 0;
+  for (const struct part_field *f = parts_fields; f < parts_fields + parts_n_fields; f++) {
+    if (!(f->ops & op) || !parts_has_field(p, f)) continue;
+    for (int k = 0; k < parts_field_ncomp(p, f); k++, col++) {
+      const void *a = parts_field_array(p, f, k);
+      if (f->type == PART_DOUBLE) PACK_COLUMN(double, a);
+      else if (f->type == PART_INT) PACK_COLUMN(int, a);
+      else PACK_COLUMN(int64_t, a);
+    }
+  }
 }
 
-void parts_unpack(struct parts *p, long j, const double *b) {
-  for (int d = 0; d < p->dim; d++) { p->x[d][j] = *b++; p->v[d][j] = *b++; }
-  p->rho[j] = *b++;
-  p->p[j] = *b++;
-  p->m[j] = *b++;
-  p->phase[j] = (int)*b++;
-  p->id[j] = (int64_t)*b++;
-  p->cell[j] = (int)*b++;
-  if (!p->wall) return;
-  for (int d = 0; d < p->dim; d++) p->mirror[d][j] = *b++;
-  p->wall[j] = (int)*b;
+/* Column col of rows of width w in b into slots first.. of the array a of type T. */
+#define UNPACK_COLUMN(T, a)                                                       \
+  do {                                                                            \
+    T *dst = (T *)(a) + first;                                                    \
+    for (long r = 0; r < n; r++) dst[r] = (T)b[r * w + col];                      \
+  } while (0)
+
+void parts_unpack(struct parts *p, unsigned op, long first, long n, const double *b) {
+  int w = parts_packed_size(p, op), col = 0;
+  for (const struct part_field *f = parts_fields; f < parts_fields + parts_n_fields; f++) {
+    if (!(f->ops & op) || !parts_has_field(p, f)) continue;
+    for (int k = 0; k < parts_field_ncomp(p, f); k++, col++) {
+      void *a = parts_field_array(p, f, k);
+      if (f->type == PART_DOUBLE) UNPACK_COLUMN(double, a);
+      else if (f->type == PART_INT) UNPACK_COLUMN(int, a);
+      else UNPACK_COLUMN(int64_t, a);
+    }
+  }
 }
 
 static void reserve_buf(double **buf, long *cap, long n) {
@@ -160,7 +177,7 @@ static void exchange_buffers(struct halo *h, const long *n_send_vals, const long
 }
 
 void halo_rebuild(struct halo *h, const struct space *s, struct parts *p) {
-  int np = h->n_proxies, w = parts_packed_size(p);
+  int np = h->n_proxies, w = parts_packed_size(p, PART_HALO);
   long *counts = zeroed_counts(h);
   long *n_send = counts, *n_recv = counts + np + 1, *vals_send = counts + 2 * (np + 1),
        *vals_recv = counts + 3 * (np + 1);
@@ -179,13 +196,13 @@ void halo_rebuild(struct halo *h, const struct space *s, struct parts *p) {
     vals_recv[k] = n_recv[k] * w;
     reserve_buf(&px->send_buf, &px->send_cap, vals_send[k]);
     reserve_buf(&px->recv_buf, &px->recv_cap, vals_recv[k]);
-    for (long i = 0; i < px->n_send; i++) parts_pack(p, px->send_index[i], px->send_buf + i * w);
+    parts_pack(p, PART_HALO, px->send_index, px->n_send, px->send_buf);
   }
   parts_reserve(p, p->n_owned + total);
   exchange_buffers(h, vals_send, vals_recv, TAG_PARTS);
   for (int k = 0; k < np; k++) {
     struct proxy *px = &h->proxies[k];
-    for (long i = 0; i < px->n_recv; i++) parts_unpack(p, px->recv_first + i, px->recv_buf + i * w);
+    parts_unpack(p, PART_HALO, px->recv_first, px->n_recv, px->recv_buf);
   }
   p->n_halo = total;
 }
@@ -228,7 +245,7 @@ static int64_t first_lost(const struct halo *h, const struct space *s, const str
 /* Pack the owned particles leaving for each proxy (all neighbours, see first_lost); compacts the
  * stayers. */
 static void pack_strays(struct halo *h, const struct space *s, struct parts *p, long *n_out) {
-  int w = parts_packed_size(p);
+  int w = parts_packed_size(p, PART_MIGRATE);
   long kept = 0;
   for (long i = 0; i < p->n_owned; i++) {
     int dest = s->owner[p->cell[i]];
@@ -240,14 +257,14 @@ static void pack_strays(struct halo *h, const struct space *s, struct parts *p, 
     struct proxy *px = &h->proxies[h->proxy_of_rank[dest]];
     int k = h->proxy_of_rank[dest];
     reserve_buf(&px->send_buf, &px->send_cap, (n_out[k] + 1) * w);
-    parts_pack(p, i, px->send_buf + n_out[k] * w);
+    parts_pack(p, PART_MIGRATE, &i, 1, px->send_buf + n_out[k] * w);
     n_out[k]++;
   }
   p->n_owned = kept;
 }
 
 int64_t halo_migrate(struct halo *h, const struct space *s, struct parts *p) {
-  int np = h->n_proxies, w = parts_packed_size(p);
+  int np = h->n_proxies, w = parts_packed_size(p, PART_MIGRATE);
   long *counts = zeroed_counts(h);
   long *n_out = counts, *n_in = counts + np + 1, *vals_out = counts + 2 * (np + 1),
        *vals_in = counts + 3 * (np + 1);
@@ -265,7 +282,9 @@ int64_t halo_migrate(struct halo *h, const struct space *s, struct parts *p) {
   }
   exchange_buffers(h, vals_out, vals_in, TAG_MIGRATE);
   parts_reserve(p, p->n_owned + total);
-  for (int k = 0; k < np; k++)
-    for (long i = 0; i < n_in[k]; i++) parts_unpack(p, p->n_owned++, h->proxies[k].recv_buf + i * w);
+  for (int k = 0; k < np; k++) {
+    parts_unpack(p, PART_MIGRATE, p->n_owned, n_in[k], h->proxies[k].recv_buf);
+    p->n_owned += n_in[k];
+  }
   return -1;
 }

@@ -17,7 +17,7 @@ static long *group_by_owner(const struct space *s, const struct parts *p, int *s
 }
 
 void redistribute_parts(const struct space *s, struct parts *p, MPI_Comm comm) {
-  int nr = s->n_ranks, w = parts_packed_size(p);
+  int nr = s->n_ranks, w = parts_packed_size(p, PART_MIGRATE);
   int *cnt = mem_calloc(4 * nr, sizeof(int), "migration counts"), *send_count = cnt, *recv_count = cnt + nr;
   int *sdispl = cnt + 2 * nr, *rdispl = cnt + 3 * nr;
   long *order = group_by_owner(s, p, send_count);
@@ -30,14 +30,14 @@ void redistribute_parts(const struct space *s, struct parts *p, MPI_Comm comm) {
   }
   double *sbuf = mem_calloc((size_t)p->n_owned * w + 1, sizeof(double), "migration send buffer");
   double *rbuf = mem_calloc((size_t)n_recv * w + 1, sizeof(double), "migration receive buffer");
-  for (long k = 0; k < p->n_owned; k++) parts_pack(p, order[k], sbuf + k * w);
+  parts_pack(p, PART_MIGRATE, order, p->n_owned, sbuf);
   for (int r = 0; r < nr; r++) {
     send_count[r] *= w;
     recv_count[r] *= w;
   }
   MPI_Alltoallv(sbuf, send_count, sdispl, MPI_DOUBLE, rbuf, recv_count, rdispl, MPI_DOUBLE, comm);
   parts_reserve(p, n_recv);
-  for (long k = 0; k < n_recv; k++) parts_unpack(p, k, rbuf + k * w);
+  parts_unpack(p, PART_MIGRATE, 0, n_recv, rbuf);
   p->n_owned = n_recv;
   p->n_halo = 0;
   free(sbuf);

@@ -80,28 +80,26 @@ static void sort_order(struct space *s, const struct parts *p, long first, long 
   }
 }
 
-#define PERMUTE(type, arr)                                                  \
+/* Put the array a of type T (slots first..first+n) in s->order, through s->scratch. */
+#define PERMUTE(T, a)                                                       \
   do {                                                                      \
-    type *tmp = (type *)s->scratch;                                         \
-    for (long k = 0; k < n; k++) tmp[k] = (arr)[s->order[k]];               \
-    memcpy((arr) + first, tmp, n * sizeof(type));                           \
+    T *arr = (T *)(a), *tmp = (T *)s->scratch;                              \
+    for (long k = 0; k < n; k++) tmp[k] = arr[s->order[k]];                 \
+    memcpy(arr + first, tmp, n * sizeof(T));                                \
   } while (0)
 
 void space_sort(struct space *s, struct parts *p, long first, long n) {
   ensure_scratch(s, n);
   sort_order(s, p, first, n);
-  for (int d = 0; d < p->dim; d++) {
-    PERMUTE(double, p->x[d]);
-    PERMUTE(double, p->v[d]);
-    if (p->wall) PERMUTE(double, p->mirror[d]);
+  for (const struct part_field *f = parts_fields; f < parts_fields + parts_n_fields; f++) {
+    if (!parts_has_field(p, f)) continue;
+    for (int k = 0; k < parts_field_ncomp(p, f); k++) {
+      void *a = parts_field_array(p, f, k);
+      if (f->type == PART_DOUBLE) PERMUTE(double, a);
+      else if (f->type == PART_INT) PERMUTE(int, a);
+      else PERMUTE(int64_t, a);
+    }
   }
-  PERMUTE(double, p->rho);
-  PERMUTE(double, p->p);
-  PERMUTE(double, p->m);
-  PERMUTE(int, p->phase);
-  PERMUTE(int64_t, p->id);
-  PERMUTE(int, p->cell);
-  if (p->wall) PERMUTE(int, p->wall);
 }
 
 void space_index(struct space *s, const struct parts *p) {
