@@ -185,8 +185,9 @@ void engine_report_particle(const struct engine *e, long i, const char *what);
 /** Free everything and release the output folder's lock. */
 void engine_free(struct engine *e);
 
-/** Advance one RK4 step (all stages, dt from the first stage), or with scheme riemann one
- *  advection step (engine_step_dual). Returns 0 or 2 if a check tripped. */
+/** Advance one step of the case's scheme (its `step` in the scheme table, engine/schemes.h: an RK
+ *  step, all stages, dt from the first stage, or with scheme riemann one advection step,
+ *  engine_step_dual). Returns 0 or 2 if a check tripped. */
 int engine_step(struct engine *e);
 
 /** Scheme riemann: one advection step of the dual-criteria time stepping (paper 002 section 2.5):

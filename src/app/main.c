@@ -5,6 +5,7 @@
 #include <string.h>
 #include "case/case_load.h"
 #include "engine/engine.h"
+#include "engine/schemes.h"
 #include "base/mem.h"
 #include "app/preflight.h"
 #include "engine/signal_stop.h"
@@ -76,56 +77,6 @@ static int parse_args(int argc, char **argv, struct args *a, char *err, size_t l
   return 0;
 }
 
-/* Schemes whose viscosity always couples the phases with the harmonic mean (interface_viscosity
- * harmonic, their default) refuse none; why names the scheme's equation. Returns 0 or 1. */
-static int coupled_viscosity_refused(const struct case_def *c, const char *scheme, const char *why, char *err,
-                                     size_t len) {
-  if (c->interface_viscosity != IFACE_VISC_NONE) return 0;
-  return snprintf(err, len, "%s: physics.interface_viscosity: none is not available with scheme %s "
-                  "(its viscosity, %s, always couples the phases: harmonic)", c->source_file, scheme, why), 1;
-}
-
-/* Scheme same-phase-continuity has its own pair pass (paper 003): the delta-plus terms are not in
- * it, so a case asking for one is refused rather than run without it. Its viscosity always couples
- * the phases (interface_viscosity harmonic, its default): refuse none. */
-static int same_phase_terms(const struct case_def *c, char *err, size_t len) {
-  const char *key = c->shifting != SHIFTING_NONE ? "physics.shifting: only none"
-                    : c->tensile_control ? "physics.tensile_control: only false"
-                    : c->acoustic_damper > 0 ? "physics.acoustic_damper: only 0"
-                    : c->interface_sharpness > 0 ? "physics.interface_sharpness: only 0"
-                    : c->interface_pressure != IFACE_P_SUM ? "physics.interface_pressure: only sum" : NULL;
-  if (coupled_viscosity_refused(c, "same-phase-continuity", "paper 003 Eq. 21 with the harmonic mean", err, len))
-    return 1;
-  if (!key) return 0;
-  snprintf(err, len, "%s: %s with scheme same-phase-continuity (paper 003 has no such term)", c->source_file, key);
-  return 1;
-}
-
-/* Scheme generalized-dissipation (paper 004) has none of paper 000's shifting, tensile control,
- * acoustic damper, sharpness force or interface-pressure options: refuse them by name. Its
- * viscosity always couples the phases (interface_viscosity harmonic, its default): refuse none. */
-static int gd_unsupported(const struct case_def *c, char *err, size_t len) {
-  const char *key = c->shifting != SHIFTING_NONE ? "shifting"
-                    : c->tensile_control           ? "tensile_control"
-                    : c->acoustic_damper > 0       ? "acoustic_damper"
-                    : c->interface_sharpness > 0   ? "interface_sharpness"
-                    : c->interface_pressure != IFACE_P_SUM ? "interface_pressure" : NULL;
-  if (coupled_viscosity_refused(c, "generalized-dissipation", "paper 004 Eq. 10", err, len)) return 1;
-  if (!key) return 0;
-  snprintf(err, len, "%s: physics.%s: not part of scheme generalized-dissipation (use none, false, 0 or sum)",
-           c->source_file, key);
-  return 1;
-}
-
-/* Scheme riemann: fixed walls only (its dual stepper does not move walls); its viscous pair term
- * takes the harmonic mean of the two particles' viscosities, across phases too: refuse none. */
-static int riemann_supported(const struct case_def *c, char *err, size_t len) {
-  for (int w = 0; w < c->n_walls; w++)
-    if (c->walls[w].moving)
-      return snprintf(err, len, "%s: walls: scheme riemann supports fixed walls only in this version", c->source_file), 1;
-  return coupled_viscosity_refused(c, "riemann", "paper 002 Eqs. 6-9 with the harmonic mean", err, len);
-}
-
 /* What this build and the chosen scheme can run; anything else is refused with a reason. */
 static int supported(const struct case_def *c, char *err, size_t len) {
   const char *src = c->source_file;
@@ -137,12 +88,8 @@ static int supported(const struct case_def *c, char *err, size_t len) {
     return snprintf(err, len, "%s: physics.spc_model: conventional only with scheme same-phase-continuity", src), 1;
   if (c->dissipation_form != DISSIPATION_CONSISTENT && c->scheme != SCHEME_GENERALIZED_DISSIPATION)
     return snprintf(err, len, "%s: physics.dissipation_form: only scheme generalized-dissipation has one", src), 1;
-  switch (c->scheme) {
-    case SCHEME_RIEMANN: return riemann_supported(c, err, len);
-    case SCHEME_SAME_PHASE_CONTINUITY: return same_phase_terms(c, err, len);
-    case SCHEME_GENERALIZED_DISSIPATION: return gd_unsupported(c, err, len);
-    default: return 0;
-  }
+  const struct scheme *s = scheme_of(c->scheme);
+  return s->refuse ? s->refuse(c, err, len) : 0;
 }
 
 /* dir/name in a new string (free it). */

@@ -25,6 +25,7 @@
 /* Enumeration spellings, in the order of the enums of case.h. */
 static const char *const SCHEME_NAMES[] = {"delta-plus", "delta-sph", "same-phase-continuity",
                                            "generalized-dissipation", "riemann", NULL};
+_Static_assert(sizeof SCHEME_NAMES / sizeof SCHEME_NAMES[0] == SCHEME_COUNT + 1, "a spelling per enum scheme_kind");
 static const char *const KERNEL_NAMES[] = {"gaussian", "wendland-c2", NULL};
 static const char *const SHAPE_NAMES[] = {"box", "circle", "polygon", NULL};
 static const char *const SLIP_NAMES[] = {"free", "no", NULL};

@@ -7,6 +7,7 @@
 #include "physics/eos.h"
 #include "physics/passes.h"
 #include "base/mem.h"
+#include "engine/schemes.h"
 
 #define MOTION_SAFETY 0.75   /* fraction of the allowed motion per step used by the dt limit */
 
@@ -115,9 +116,9 @@ static int halo_field_list(struct engine *e, int mask, double **f) {
   return n;
 }
 
-/* Append an operation to the pipeline. engine_assemble makes at most 17 (ENGINE_MAX_OPS, engine.h),
- * whatever the case; one more is a programming error, stopped here before it overflows e->ops. */
-static void add_op(struct engine *e, const char *name, void (*pass)(struct engine *), int mask,
+/* engine_assemble makes at most 17 operations (ENGINE_MAX_OPS, engine.h), whatever the case; one
+ * more is a programming error, stopped here before it overflows e->ops. */
+void engine_add_op(struct engine *e, const char *name, void (*pass)(struct engine *), int mask,
                    int once) {
   if (e->n_ops == ENGINE_MAX_OPS) {
     fprintf(stderr, "mpsph: internal error: the stage pipeline has more than %d operations (adding '%s')\n",
@@ -128,37 +129,14 @@ static void add_op(struct engine *e, const char *name, void (*pass)(struct engin
                                          .once_per_step = once};
 }
 
-/* The particle volumes and the neighbour lists (the lists once per step). */
-static void add_volumes_and_lists(struct engine *e) {
-  add_op(e, "volumes m/rho of owned and halo particles", pass_volumes, 0, 0);
-  add_op(e, "neighbour lists of the owned fluid (once per step)", pass_neighbour_lists, 0, 1);
+void engine_add_volumes_and_lists(struct engine *e) {
+  engine_add_op(e, "volumes m/rho of owned and halo particles", pass_volumes, 0, 0);
+  engine_add_op(e, "neighbour lists of the owned fluid (once per step)", pass_neighbour_lists, 0, 1);
 }
 
-/* Scheme riemann: its own terms, with the walls, the potential, (with a light phase) the
- * transport velocity and the surface tension; the delta-plus options of the case do not apply. */
-static unsigned riemann_features(const struct case_def *c) {
-  unsigned f = FEAT_RIEMANN | (c->n_walls ? FEAT_WALLS : 0) | (c->potential_omega > 0 ? FEAT_CENTRAL : 0);
-  if (c->surface_tension > 0 && c->n_phases > 1) f |= FEAT_SURFACE_TENSION;
-  for (int ph = 0; ph < c->n_phases; ph++)
-    if (riemann_light_phase(c, ph)) f |= FEAT_TRANSPORT_VELOCITY;
-  return f;
-}
-
-/* The gradient pass and the right-hand sides of schemes delta-plus and delta-sph. */
-static void add_gradients_and_rhs(struct engine *e, unsigned f) {
-  static const char *names[2][2] = {{"gradients: div u", "gradients: div u, shifting velocity"},
-                                    {"gradients: renormalised density gradient, div u",
-                                     "gradients: renormalised density gradient, div u, shifting velocity"}};
-  add_op(e, names[(f & FEAT_DIFFUSION) != 0][(f & FEAT_SHIFT) != 0], pass_gradients, 0, 0);
-  int halo = ((f & FEAT_DIFFUSION) ? HF_GRAD_RHO : 0) | ((f & FEAT_SHIFT) ? HF_SHIFT : 0) | ((f & FEAT_DAMPER) ? HF_DIV : 0);
-  if (halo) add_op(e, "halo: gradient-pass results", NULL, halo, 0);
-  add_op(e, "fluid rhs: continuity and momentum", pass_fluid_rhs, 0, 0);
-}
-
-/* The terms this case needs (DESIGN.md data flow 3: what a scene does not use is not computed). */
-static unsigned case_features(const struct engine *e) {
+/* DESIGN.md data flow 3: what a scene does not use is not computed. */
+unsigned engine_option_terms(const struct engine *e) {
   const struct case_def *c = e->c;
-  if (c->scheme == SCHEME_RIEMANN) return riemann_features(c);
   unsigned f = 0;
   int liquid = 0, viscous = c->alpha > 0;
   for (int ph = 0; ph < c->n_phases; ph++) {
@@ -176,10 +154,7 @@ static unsigned case_features(const struct engine *e) {
   if (c->tensile_control) f |= FEAT_TIC;
   if (c->interface_sharpness > 0 && c->n_phases > 1) f |= FEAT_SHARPNESS;
   if (c->potential_omega > 0) f |= FEAT_CENTRAL;
-  if (c->scheme == SCHEME_DELTA_SPH) f |= FEAT_SHEPARD;
-  if (c->scheme == SCHEME_SAME_PHASE_CONTINUITY) f |= FEAT_SAME_PHASE_CONTINUITY;
   if (c->surface_tension > 0 && c->n_phases > 1) f |= FEAT_SURFACE_TENSION;
-  if (c->scheme == SCHEME_GENERALIZED_DISSIPATION) f |= FEAT_GENERALIZED_DISSIPATION;
   return f;
 }
 
@@ -211,55 +186,41 @@ void engine_assemble(struct engine *e) {
   struct stage_op old[ENGINE_MAX_OPS];
   int n_old = e->n_ops;
   memcpy(old, e->ops, sizeof old);
-  unsigned f = e->features = case_features(e);
+  const struct scheme *s = scheme_of(e->c->scheme);
+  e->features = s->terms(e) | s->feature;
   e->moving_walls = 0;
   for (int w = 0; w < e->c->n_walls; w++) e->moving_walls |= e->c->walls[w].moving;
   damper_coefficients(e);
   interface_table(e->c->interface_mode, e->iface);
   e->n_ops = 0;
-  if (f & FEAT_RIEMANN) {   /* its own pipeline, run by engine_step_dual */
-    engine_assemble_dual(e);
-    carry_op_totals(e, old, n_old);
-    engine_work_reserve(e);
-    return;
-  }
-  add_op(e, "halo: positions, velocities, densities, pressures", NULL, HF_POS | HF_VEL | HF_RHO | HF_P, 0);
-  if (f & FEAT_SHEPARD) {   /* the pressure first: the wall ghosts interpolate it */
-    add_volumes_and_lists(e);
-    add_op(e, "Shepard density and pressure (delta-sph)", pass_shepard_density, 0, 0);
-    add_op(e, "halo: Shepard densities, pressures", NULL, HF_RHO_SHEPARD | HF_P, 0);
-  }
-  if (f & FEAT_WALLS) {
-    add_op(e, "wall ghosts: Shepard interpolation at mirror points", pass_wall_ghosts, 0, 0);
-    add_op(e, "halo: wall ghost values", NULL, HF_VEL | HF_RHO | HF_P | HF_MASS, 0);
-  }
-  if (!(f & FEAT_SHEPARD)) add_volumes_and_lists(e);
-  if (f & FEAT_SURFACE) {
-    add_op(e, "free surface: eigenvalue + umbrella detection, normals (once per step)", pass_free_surface, 0, 1);
-    add_op(e, "halo: free-surface flags (once per step)", NULL, HF_SURFACE, 1);
-    add_op(e, "free-surface region: band around the detected particles (once per step)", pass_surface_band, 0, 1);
-  }
-  if (f & FEAT_SAME_PHASE_CONTINUITY) {   /* its own pair passes (main.c refuses the delta-plus terms) */
-    if (e->c->spc_model == SPC_PRESENT) {
-      add_op(e, "Shepard pressure over all phases (same-phase-continuity)", pass_shepard_pressure, 0, 0);
-      add_op(e, "halo: Shepard pressures", NULL, HF_P_SHEPARD, 0);
-    }
-    add_op(e, "same-phase continuity and momentum rhs", pass_same_phase_rhs, 0, 0);
-  } else if (f & FEAT_GENERALIZED_DISSIPATION) {
-    add_op(e, "gradients: Shepard sum Gamma, renormalised pressure gradient", pass_gd_gradients, 0, 0);
-    add_op(e, "halo: Gamma, pressure gradients", NULL, HF_GD, 0);
-    add_op(e, "fluid rhs: continuity with generalized dissipation, momentum", pass_gd_rhs, 0, 0);
-  } else
-    add_gradients_and_rhs(e, f);
-  if (f & FEAT_SURFACE_TENSION) {
-    add_op(e, "surface tension: colour gradient, interface normals", pass_interface_normals, 0, 0);
-    add_op(e, "halo: interface normals", NULL, HF_INTERFACE_NORMAL, 0);
-    add_op(e, "surface tension: curvature, CSF force", pass_surface_tension, 0, 0);
-  }
-  if ((f & FEAT_WALLS) && e->c->wall_guard > 0)
-    add_op(e, "wall guard: no acceleration into a wall within the guard distance", pass_wall_guard, 0, 0);
+  s->pipeline(e);
   carry_op_totals(e, old, n_old);
   engine_work_reserve(e);
+}
+
+void engine_assemble_stage(struct engine *e) {
+  const struct scheme *s = scheme_of(e->c->scheme);
+  unsigned f = e->features;
+  engine_add_op(e, "halo: positions, velocities, densities, pressures", NULL, HF_POS | HF_VEL | HF_RHO | HF_P, 0);
+  if (s->pressure) s->pressure(e);
+  if (f & FEAT_WALLS) {
+    engine_add_op(e, "wall ghosts: Shepard interpolation at mirror points", pass_wall_ghosts, 0, 0);
+    engine_add_op(e, "halo: wall ghost values", NULL, HF_VEL | HF_RHO | HF_P | HF_MASS, 0);
+  }
+  if (!s->pressure) engine_add_volumes_and_lists(e);
+  if (f & FEAT_SURFACE) {
+    engine_add_op(e, "free surface: eigenvalue + umbrella detection, normals (once per step)", pass_free_surface, 0, 1);
+    engine_add_op(e, "halo: free-surface flags (once per step)", NULL, HF_SURFACE, 1);
+    engine_add_op(e, "free-surface region: band around the detected particles (once per step)", pass_surface_band, 0, 1);
+  }
+  s->rhs(e);
+  if (f & FEAT_SURFACE_TENSION) {
+    engine_add_op(e, "surface tension: colour gradient, interface normals", pass_interface_normals, 0, 0);
+    engine_add_op(e, "halo: interface normals", NULL, HF_INTERFACE_NORMAL, 0);
+    engine_add_op(e, "surface tension: curvature, CSF force", pass_surface_tension, 0, 0);
+  }
+  if ((f & FEAT_WALLS) && e->c->wall_guard > 0)
+    engine_add_op(e, "wall guard: no acceleration into a wall within the guard distance", pass_wall_guard, 0, 0);
 }
 
 /** Print the assembled pipeline and the active terms (rank 0). */
@@ -388,8 +349,9 @@ double engine_capillary_dt(const struct engine *e) {
  * damper; *limit names the smallest term. Scheme same-phase-continuity takes paper 003's
  * CFL h / c0 (section 3.3) without c_stab and without the acceleration and artificial-viscosity
  * limits; the physical viscous and capillary limits stay. */
-static double delta_plus_step(const struct engine *e, double a_max, const char **limit) {
+double engine_delta_plus_dt(const struct engine *e, double a_max, double adv_max, const char **limit) {
   const struct case_def *c = e->c;
+  (void)adv_max;   /* the motion limit is time_step's */
   const int paper003 = (e->features & FEAT_SAME_PHASE_CONTINUITY) != 0;
   double c_eff = paper003 ? e->c_max : fmax(e->c_max, stable_sound_speed(e));
   double dt = c->cfl * e->h / c_eff;
@@ -412,8 +374,7 @@ static double delta_plus_step(const struct engine *e, double a_max, const char *
 static double time_step(struct engine *e, const char **limit) {
   double a_max, adv_max;
   reduce_first_stage(e, &a_max, &adv_max);
-  double dt = (e->features & FEAT_GENERALIZED_DISSIPATION) ? gd_time_step(e, a_max, adv_max, limit)
-                                                          : delta_plus_step(e, a_max, limit);
+  double dt = scheme_of(e->c->scheme)->time_step(e, a_max, adv_max, limit);
   if (adv_max > 0) limit_by(&dt, limit, MOTION_SAFETY * engine_shift_max(e) / adv_max, "motion (cell skin)");
   return dt;
 }
@@ -498,10 +459,11 @@ static void rk_update(struct engine *e, const struct rk_scheme *rk, int s, const
   if (e->moving_walls) move_ghosts(e, start, e->step_start_time + (!last ? rk->next[s] : 1.0) * e->dt);
 }
 
-int engine_step(struct engine *e) {
+int engine_step(struct engine *e) { return scheme_of(e->c->scheme)->step(e); }
+
+int engine_step_rk(struct engine *e) {
   const struct rk_scheme *rk = (e->features & FEAT_SAME_PHASE_CONTINUITY) ? &MIDPOINT_PC : &RK4;
   struct frame start[CASE_MAX_WALLS];
-  if (e->features & FEAT_RIEMANN) return engine_step_dual(e);
   engine_work_reserve(e);
   save_state(e);
   e->step_start_time = e->time;

@@ -1,0 +1,126 @@
+/* schemes.c — the table of the schemes (include/engine/schemes.h) and each scheme's own pieces:
+ * its terms, its operations in the pipeline and its refusals of the options it cannot run. */
+#include <stdio.h>
+#include "engine/schemes.h"
+#include "physics/passes.h"
+
+/* Schemes delta-sph: the Shepard density and pressure first (the wall ghosts interpolate it). */
+static void shepard_pressure_ops(struct engine *e) {
+  engine_add_volumes_and_lists(e);
+  engine_add_op(e, "Shepard density and pressure (delta-sph)", pass_shepard_density, 0, 0);
+  engine_add_op(e, "halo: Shepard densities, pressures", NULL, HF_RHO_SHEPARD | HF_P, 0);
+}
+
+/* Schemes delta-plus and delta-sph: the gradient pass and the right-hand sides. */
+static void gradients_and_rhs_ops(struct engine *e) {
+  static const char *names[2][2] = {{"gradients: div u", "gradients: div u, shifting velocity"},
+                                    {"gradients: renormalised density gradient, div u",
+                                     "gradients: renormalised density gradient, div u, shifting velocity"}};
+  unsigned f = e->features;
+  engine_add_op(e, names[(f & FEAT_DIFFUSION) != 0][(f & FEAT_SHIFT) != 0], pass_gradients, 0, 0);
+  int halo = ((f & FEAT_DIFFUSION) ? HF_GRAD_RHO : 0) | ((f & FEAT_SHIFT) ? HF_SHIFT : 0) | ((f & FEAT_DAMPER) ? HF_DIV : 0);
+  if (halo) engine_add_op(e, "halo: gradient-pass results", NULL, halo, 0);
+  engine_add_op(e, "fluid rhs: continuity and momentum", pass_fluid_rhs, 0, 0);
+}
+
+/* Scheme same-phase-continuity: its own pair passes (its refusals keep the delta-plus terms out). */
+static void same_phase_ops(struct engine *e) {
+  if (e->c->spc_model == SPC_PRESENT) {
+    engine_add_op(e, "Shepard pressure over all phases (same-phase-continuity)", pass_shepard_pressure, 0, 0);
+    engine_add_op(e, "halo: Shepard pressures", NULL, HF_P_SHEPARD, 0);
+  }
+  engine_add_op(e, "same-phase continuity and momentum rhs", pass_same_phase_rhs, 0, 0);
+}
+
+/* Scheme generalized-dissipation: its gradient pass and right-hand sides. */
+static void gd_ops(struct engine *e) {
+  engine_add_op(e, "gradients: Shepard sum Gamma, renormalised pressure gradient", pass_gd_gradients, 0, 0);
+  engine_add_op(e, "halo: Gamma, pressure gradients", NULL, HF_GD, 0);
+  engine_add_op(e, "fluid rhs: continuity with generalized dissipation, momentum", pass_gd_rhs, 0, 0);
+}
+
+/* Scheme riemann: the walls, the potential, (with a light phase) the transport velocity and the
+ * surface tension; the delta-plus options of the case do not apply. */
+static unsigned riemann_terms(const struct engine *e) {
+  const struct case_def *c = e->c;
+  unsigned f = (c->n_walls ? FEAT_WALLS : 0) | (c->potential_omega > 0 ? FEAT_CENTRAL : 0);
+  if (c->surface_tension > 0 && c->n_phases > 1) f |= FEAT_SURFACE_TENSION;
+  for (int ph = 0; ph < c->n_phases; ph++)
+    if (riemann_light_phase(c, ph)) f |= FEAT_TRANSPORT_VELOCITY;
+  return f;
+}
+
+/* Schemes whose viscosity always couples the phases with the harmonic mean (interface_viscosity
+ * harmonic, their default) refuse none; why names the scheme's equation. Returns 0 or 1. */
+static int coupled_viscosity_refused(const struct case_def *c, const char *scheme, const char *why, char *err,
+                                     size_t len) {
+  if (c->interface_viscosity != IFACE_VISC_NONE) return 0;
+  return snprintf(err, len, "%s: physics.interface_viscosity: none is not available with scheme %s "
+                  "(its viscosity, %s, always couples the phases: harmonic)", c->source_file, scheme, why), 1;
+}
+
+/* The options of paper 000 that schemes same-phase-continuity and generalized-dissipation do not
+ * have (keys under physics), with the value that leaves each off. */
+static const char *const DELTA_PLUS_ONLY[][2] = {{"shifting", "none"}, {"tensile_control", "false"},
+                                                 {"acoustic_damper", "0"}, {"interface_sharpness", "0"},
+                                                 {"interface_pressure", "sum"}};
+
+/* The first option of DELTA_PLUS_ONLY the case turns on (its index), or -1. */
+static int delta_plus_option(const struct case_def *c) {
+  return c->shifting != SHIFTING_NONE ? 0
+         : c->tensile_control ? 1
+         : c->acoustic_damper > 0 ? 2
+         : c->interface_sharpness > 0 ? 3
+         : c->interface_pressure != IFACE_P_SUM ? 4 : -1;
+}
+
+/* Scheme same-phase-continuity has its own pair pass (paper 003): the delta-plus terms are not in
+ * it, so a case asking for one is refused rather than run without it. Its viscosity always couples
+ * the phases (interface_viscosity harmonic, its default): refuse none. */
+static int same_phase_terms(const struct case_def *c, char *err, size_t len) {
+  int k = delta_plus_option(c);
+  if (coupled_viscosity_refused(c, "same-phase-continuity", "paper 003 Eq. 21 with the harmonic mean", err, len))
+    return 1;
+  if (k < 0) return 0;
+  snprintf(err, len, "%s: physics.%s: only %s with scheme same-phase-continuity (paper 003 has no such term)",
+           c->source_file, DELTA_PLUS_ONLY[k][0], DELTA_PLUS_ONLY[k][1]);
+  return 1;
+}
+
+/* Scheme generalized-dissipation (paper 004) has none of paper 000's shifting, tensile control,
+ * acoustic damper, sharpness force or interface-pressure options: refuse them by name. Its
+ * viscosity always couples the phases (interface_viscosity harmonic, its default): refuse none. */
+static int gd_unsupported(const struct case_def *c, char *err, size_t len) {
+  int k = delta_plus_option(c);
+  if (coupled_viscosity_refused(c, "generalized-dissipation", "paper 004 Eq. 10", err, len)) return 1;
+  if (k < 0) return 0;
+  snprintf(err, len, "%s: physics.%s: not part of scheme generalized-dissipation (use none, false, 0 or sum)",
+           c->source_file, DELTA_PLUS_ONLY[k][0]);
+  return 1;
+}
+
+/* Scheme riemann: fixed walls only (its dual stepper does not move walls); its viscous pair term
+ * takes the harmonic mean of the two particles' viscosities, across phases too: refuse none. */
+static int riemann_supported(const struct case_def *c, char *err, size_t len) {
+  for (int w = 0; w < c->n_walls; w++)
+    if (c->walls[w].moving)
+      return snprintf(err, len, "%s: walls: scheme riemann supports fixed walls only in this version", c->source_file), 1;
+  return coupled_viscosity_refused(c, "riemann", "paper 002 Eqs. 6-9 with the harmonic mean", err, len);
+}
+
+/* The schemes, indexed by enum scheme_kind. */
+static const struct scheme SCHEMES[] = {
+    [SCHEME_DELTA_PLUS] = {0, engine_option_terms, engine_assemble_stage, NULL, gradients_and_rhs_ops,
+                           engine_delta_plus_dt, engine_step_rk, NULL},
+    [SCHEME_DELTA_SPH] = {FEAT_SHEPARD, engine_option_terms, engine_assemble_stage, shepard_pressure_ops,
+                          gradients_and_rhs_ops, engine_delta_plus_dt, engine_step_rk, NULL},
+    [SCHEME_SAME_PHASE_CONTINUITY] = {FEAT_SAME_PHASE_CONTINUITY, engine_option_terms, engine_assemble_stage,
+                                      NULL, same_phase_ops, engine_delta_plus_dt, engine_step_rk, same_phase_terms},
+    [SCHEME_GENERALIZED_DISSIPATION] = {FEAT_GENERALIZED_DISSIPATION, engine_option_terms, engine_assemble_stage,
+                                        NULL, gd_ops, gd_time_step, engine_step_rk, gd_unsupported},
+    [SCHEME_RIEMANN] = {FEAT_RIEMANN, riemann_terms, engine_assemble_dual, NULL, NULL, NULL, engine_step_dual,
+                        riemann_supported},
+};
+_Static_assert(sizeof SCHEMES / sizeof SCHEMES[0] == SCHEME_COUNT, "one entry per enum scheme_kind");
+
+const struct scheme *scheme_of(enum scheme_kind k) { return &SCHEMES[k]; }
