@@ -8,6 +8,9 @@
 /** The name of snapshot k in the output folder (a printf format of k). */
 #define OUTDIR_SNAPSHOT_NAME "snap_%05d.h5"
 
+/** The name of the checkpoint in the output folder (written, and --restart's default). */
+#define OUTDIR_CHECKPOINT_NAME "checkpoint.h5"
+
 /** "dir/" followed by name_fmt formatted with the arguments (printf-style), in a string from
  *  mem.h that the caller frees: a file path in the output folder, never cut short. */
 char *outdir_path(const char *dir, const char *name_fmt, ...) __attribute__((format(printf, 2, 3)));
@@ -28,6 +31,10 @@ int outdir_probe(const char *path, char *err, size_t err_len);
  *  "the output folder '<path>' is in use by another run (<holder>)..." or "cannot write to the
  *  output folder '<path>': <reason>" in err. */
 int outdir_lock(const char *path, int *fd, char *err, size_t err_len);
+
+/** Bytes this process can still write in the file system of the folder of `file` (for root, also
+ *  the blocks reserved to root), or -1 when statvfs cannot tell. */
+double outdir_free_bytes(const char *file);
 
 /** Whether the file system of the folder of `file` has `bytes` free (for root, also the blocks
  *  reserved to root). Returns 0 (also when it cannot tell), or 3 with "cannot write <file>: No

@@ -9,6 +9,7 @@
 #include "base/mem.h"
 #include "app/preflight.h"
 #include "engine/signal_stop.h"
+#include "io/outdir.h"
 
 static const char *usage =
     "usage:\n"
@@ -92,14 +93,6 @@ static int supported(const struct case_def *c, char *err, size_t len) {
   return s->refuse ? s->refuse(c, err, len) : 0;
 }
 
-/* dir/name in a new string (free it). */
-static char *path_join(const char *dir, const char *name) {
-  size_t n = strlen(dir) + strlen(name) + 2;
-  char *path = mem_alloc(n, "a file path");
-  snprintf(path, n, "%s/%s", dir, name);
-  return path;
-}
-
 /* Set up and run case c into outdir (from the checkpoint restart unless NULL). The stop handler is
  * installed here, after the case is loaded and checked: before, SIGINT and SIGTERM end the process
  * (nothing is written yet); from here they end the run with a checkpoint. */
@@ -114,10 +107,10 @@ static int start_run(const struct case_def *c, const char *outdir, const char *r
 
 /* The run command: the checks of preflight_run, then the run into -o (default runs/<name>). */
 static int run_case(const struct case_def *c, const struct args *a) {
-  char *defdir = path_join("runs", c->name), *checkpoint = NULL;
+  char *defdir = outdir_path("runs", "%s", c->name), *checkpoint = NULL;
   const char *outdir = a->outdir ? a->outdir : defdir;
   int status = preflight_run(c, outdir, a->restart_path, MPI_COMM_WORLD);
-  if (!status && a->restart && !a->restart_path) checkpoint = path_join(outdir, "checkpoint.h5");
+  if (!status && a->restart && !a->restart_path) checkpoint = outdir_path(outdir, OUTDIR_CHECKPOINT_NAME);
   if (!status) status = start_run(c, outdir, a->restart_path ? a->restart_path : checkpoint);
   free(checkpoint);
   free(defdir);

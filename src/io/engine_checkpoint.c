@@ -32,7 +32,7 @@ static int run_numbers(struct engine *e, struct run_extras *x, struct hdf5_numbe
 }
 
 int engine_checkpoint_write(struct engine *e) {
-  char *path = outdir_path(e->outdir, "checkpoint.h5"), err[512];
+  char *path = outdir_path(e->outdir, OUTDIR_CHECKPOINT_NAME), err[512];
   struct run_extras x = {MPI_Wtime() - e->wall_start, e->no_free_surface, engine_finished(e), 0};
   MPI_Bcast(&x.wall_seconds, 1, MPI_DOUBLE, 0, e->comm);   /* attributes: one value for all */
   MPI_Allreduce(&e->wall_guard_hits, &x.wall_guard_hits, 1, MPI_LONG, MPI_SUM, e->comm);

@@ -70,8 +70,8 @@ static int end_row(const struct engine *e, struct csv_table *t) {
   return 0;
 }
 
-/* Collective: rank 0's status of its table writes, on every rank. */
-static int tables_agree(const struct engine *e, int status) {
+/* Collective: rank 0's status (of its table or file writes), on every rank. */
+static int rank0_status(const struct engine *e, int status) {
   MPI_Bcast(&status, 1, MPI_INT, 0, e->comm);
   return status;
 }
@@ -116,8 +116,7 @@ int engine_open_output(struct engine *e) {
       status = open_tables(e);
     }
   }
-  MPI_Bcast(&status, 1, MPI_INT, 0, e->comm);
-  return status;
+  return rank0_status(e, status);
 }
 
 /* Rank 0: close table t (if open); a table whose write failed is cut back to its complete
@@ -137,7 +136,7 @@ static int close_table(const struct engine *e, struct csv_table *t) {
 int engine_close_output(struct engine *e) {
   int status = close_table(e, &e->stats);
   if (close_table(e, &e->probes)) status = 3;
-  return tables_agree(e, status);
+  return rank0_status(e, status);
 }
 
 /* Rank 0: table t flushed and, with fsync, on disk; 0 or 3 with a message. */
@@ -150,7 +149,7 @@ static int sync_table(const struct engine *e, struct csv_table *t) {
 int engine_checkpoint(struct engine *e) {
   int status = 0;
   if (e->rank == 0) status = sync_table(e, &e->stats) | sync_table(e, &e->probes);
-  return tables_agree(e, status) ? 3 : engine_checkpoint_write(e);
+  return rank0_status(e, status) ? 3 : engine_checkpoint_write(e);
 }
 
 /* Swap the owned particles' state with the RK start state of the step (x0, v0, rho0), pressure
@@ -213,7 +212,7 @@ static int write_snapshot(struct engine *e) {
     fprintf(stderr, "mpsph: %s\n", err);
     status = 3;
   }
-  MPI_Bcast(&status, 1, MPI_INT, 0, e->comm);
+  status = rank0_status(e, status);
   e->t_output += MPI_Wtime() - t0;
   return status;
 }
@@ -283,7 +282,7 @@ int engine_output(struct engine *e, int force) {
     if (e->rank == 0) status |= end_row(e, &e->probes);
     rows = 1;
   }
-  if (rows && tables_agree(e, status)) return 3;
+  if (rows && rank0_status(e, status)) return 3;
   /* last, so that it holds the schedule advanced by this step's outputs; the end of the run
    * writes its own */
   if (!force && c->checkpoint_interval > 0 &&

@@ -206,7 +206,7 @@ static int transfer_field(hid_t dset, const struct field *f, const struct layout
   hsize_t rows = L->n < L->per_call ? L->n : L->per_call;
   double *buf = mem_calloc(rows ? rows : 1, (size_t)f->ncomp * sizeof(double), "HDF5 transfer buffer");
   int st = 0;
-  for (long c = 0; c < (st ? 0 : L->calls); c++)
+  for (long c = 0; c < L->calls; c++)
     st |= transfer_call(dset, f, L, c, dxpl, buf, reading, err, len);
   if (H5Dclose(dset) < 0 && !st) st = fail(err, len, "cannot close %s", f->name);
   free(buf);

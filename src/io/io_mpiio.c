@@ -12,15 +12,14 @@
  * failures (io_hdf5.c) and the file is discarded. */
 #include "io/io_mpiio.h"
 #include "base/mem.h"
+#include "io/outdir.h"
 
 #include <errno.h>
-#include <libgen.h>
 #include <mpi.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/statvfs.h>
 
 /* The watched file and this rank's failures in it. */
 static struct {
@@ -137,12 +136,8 @@ void mpiio_watch_begin(const char *path, MPI_Comm comm) {
 /* The reason of the recorded failure: the system's, else MPI's text; a short write without
  * either on a file system with no space left is ENOSPC. */
 static void failure_reason(char *reason, int len) {
-  struct statvfs fs;
-  char *dir = mem_strndup(watch.path, SIZE_MAX, "the path of the file being written");
   int e = watch.sys_errno;
-  if (!e && watch.mpi_code == MPI_SUCCESS && statvfs(dirname(dir), &fs) == 0 && fs.f_bavail == 0)
-    e = ENOSPC;
-  free(dir);
+  if (!e && watch.mpi_code == MPI_SUCCESS && outdir_free_bytes(watch.path) == 0) e = ENOSPC;
   if (e) snprintf(reason, (size_t)len, "%s", strerror(e));
   else if (watch.mpi_code != MPI_SUCCESS) MPI_Error_string(watch.mpi_code, reason, &len);
   else snprintf(reason, (size_t)len, "fewer bytes written than asked");

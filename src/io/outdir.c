@@ -73,17 +73,16 @@ int outdir_create(const char *path) {
 
 /* Write and remove a small file in folder path. Returns 0, or -1 with errno set. */
 static int write_probe(const char *path) {
-  char file[PATH_MAX];
-  if (snprintf(file, sizeof file, "%s/.mpsph-probe-%ld", path, (long)getpid()) >= (int)sizeof file) {
-    errno = ENAMETOOLONG;
-    return -1;
-  }
+  char *file = outdir_path(path, ".mpsph-probe-%ld", (long)getpid());
   FILE *f = fopen(file, "w");
-  if (!f) return -1;
-  int ok = fputs("probe\n", f) >= 0;
-  ok &= fclose(f) == 0;
+  int ok = f != NULL;
+  if (f) {
+    ok = fputs("probe\n", f) >= 0;
+    ok &= fclose(f) == 0;
+  }
   int saved = errno;
-  remove(file);
+  if (f) remove(file);
+  free(file);
   errno = saved;
   return ok ? 0 : -1;
 }
@@ -164,14 +163,17 @@ int outdir_lock(const char *path, int *fd, char *err, size_t err_len) {
   return 0;
 }
 
-int outdir_room(const char *file, double bytes, char *err, size_t err_len) {
+double outdir_free_bytes(const char *file) {
   char *dir = mem_strndup(file, SIZE_MAX, "a file path");
   struct statvfs fs;
   int known = statvfs(dirname(dir), &fs) == 0;
   free(dir);
-  if (!known) return 0;   /* not known: the write will tell */
-  double room = (double)fs.f_frsize * (double)(geteuid() == 0 ? fs.f_bfree : fs.f_bavail);
-  if (room >= bytes) return 0;
+  return known ? (double)fs.f_frsize * (double)(geteuid() == 0 ? fs.f_bfree : fs.f_bavail) : -1;
+}
+
+int outdir_room(const char *file, double bytes, char *err, size_t err_len) {
+  double room = outdir_free_bytes(file);
+  if (room < 0 || room >= bytes) return 0;   /* not known: the write will tell */
   snprintf(err, err_len, "cannot write %s: %s (it needs about %.3g MB, %.3g MB are free)",
            file, strerror(ENOSPC), bytes / 1e6, room / 1e6);
   return 3;
