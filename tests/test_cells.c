@@ -69,22 +69,24 @@ static long list_mismatches(const struct space *s, const struct parts *p, double
   nlist_build(&l, s, p, radius);
   for (long k = 0; k < s->n_owned_cells; k++) {
     long c = s->owned_cells[k], f = 0;
-    for (long i = s->cell_start[c]; i < s->cell_start[c] + s->cell_count[c]; i++)
+    for (long i = space_cell_first(s, c); i < space_cell_first(s, c) + space_cell_size(s, c); i++)
       if (p->phase[i] != PHASE_WALL) bad += list_differs(&l, s, p, k, f++, i, radius * radius);
   }
   nlist_free(&l);
   return bad;
 }
 
-static void check_dim(int dim, long n, double support) {
+/* The cell neighbours and lists of n random particles with cells of about `support` in top cells
+ * of at least top_per_rank per rank (1 rank: the larger blocks the smaller top_per_rank). */
+static void check_dim(int dim, long n, double support, long top_per_rank) {
   struct parts p;
   struct grid g;
   struct space s;
   double lo[3] = {0, 0, 0}, hi[3] = {1, 1, 1};
   random_parts(&p, dim, n, 17u + dim);
   grid_init(&g, dim, lo, hi, support);
-  space_init(&s, &g, 0, 1, 1);
-  int *owner = calloc(g.n_cells, sizeof(int));
+  space_init(&s, &g, 0, 1, 1, top_per_rank);
+  int *owner = calloc(s.top.n_cells, sizeof(int));
   space_set_owner(&s, owner);
   CHECK(space_assign_cells(&s, &p, 0, n) < 0, "all particles inside");
   space_sort(&s, &p, 0, n);
@@ -92,19 +94,23 @@ static void check_dim(int dim, long n, double support) {
   long sorted = 1, mismatches = 0;
   for (long i = 1; i < n; i++)
     sorted &= p.cell[i - 1] < p.cell[i] || (p.cell[i - 1] == p.cell[i] && p.id[i - 1] < p.id[i]);
-  CHECK(sorted, "%dD: particles sorted by (cell, id)", dim);
+  CHECK(sorted, "%dD, blocks of %ld: particles sorted by (cell, id)", dim, s.block);
   for (long i = 0; i < n; i++)
     mismatches += brute_count(&p, i, support * support) != cell_count_pairs(&s, &p, i, support * support);
-  CHECK(mismatches == 0, "%dD: %ld particles with a wrong neighbour count", dim, mismatches);
+  CHECK(mismatches == 0, "%dD, blocks of %ld: %ld particles with a wrong neighbour count", dim,
+        s.block, mismatches);
   mismatches = list_mismatches(&s, &p, support);
-  CHECK(mismatches == 0, "%dD: %ld particles with a wrong neighbour list", dim, mismatches);
+  CHECK(mismatches == 0, "%dD, blocks of %ld: %ld particles with a wrong neighbour list", dim,
+        s.block, mismatches);
   free(owner);
   space_free(&s);
   parts_free(&p);
 }
 
 int main(void) {
-  check_dim(2, 3000, 0.07);
-  check_dim(3, 3000, 0.15);
+  for (long top_per_rank = 1; top_per_rank <= SPACE_TOP_CELLS_PER_RANK; top_per_rank *= 16) {
+    check_dim(2, 3000, 0.07, top_per_rank);
+    check_dim(3, 3000, 0.15, top_per_rank);
+  }
   return check_report("test_cells");
 }

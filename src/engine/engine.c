@@ -47,13 +47,13 @@ static double cost_factor(const struct engine *e) {
   return sum > 0 && rate > 0 ? rate / (sum / e->n_ranks) : 1.0;
 }
 
-/* Vertex weight of each cell from this rank's owned particles scaled by the rank's cost factor,
- * summed onto rank 0 (plus 1 so that empty cells still count). */
-static int64_t *cell_weights(const struct engine *e) {
-  long n = e->space.grid.n_cells;
-  int64_t *w = mem_calloc(n, sizeof(int64_t), "cell weights");
+/* Vertex weight of each top cell from this rank's owned particles scaled by the rank's cost
+ * factor, summed onto rank 0 (plus 1 so that empty cells still count). */
+static int64_t *top_cell_weights(const struct engine *e) {
+  long n = e->space.top.n_cells;
+  int64_t *w = mem_calloc(n, sizeof(int64_t), "top cell weights");
   double factor = cost_factor(e);
-  for (long i = 0; i < e->p.n_owned; i++) w[e->p.cell[i]] += particle_work(e->p.phase[i]);
+  for (long i = 0; i < e->p.n_owned; i++) w[space_top_of(&e->space, e->p.cell[i])] += particle_work(e->p.phase[i]);
   for (long c = 0; c < n; c++) w[c] = (int64_t)llround((double)w[c] * factor);
   if (e->rank == 0) {
     MPI_Reduce(MPI_IN_PLACE, w, (int)n, MPI_INT64_T, MPI_SUM, 0, e->comm);
@@ -76,9 +76,9 @@ static void resort(struct engine *e) {
 
 int engine_repartition(struct engine *e) {
   char err[512];
-  int64_t *w = cell_weights(e);
-  int *owner = mem_calloc(e->space.grid.n_cells, sizeof(int), "cell owners");
-  int status = partition_cells(&e->space.grid, w, e->n_ranks, e->comm, owner, err, sizeof(err));
+  int64_t *w = top_cell_weights(e);
+  int *owner = mem_calloc(e->space.top.n_cells, sizeof(int), "top cell owners");
+  int status = partition_cells(&e->space.top, w, e->n_ranks, e->comm, owner, err, sizeof(err));
   free(w);
   if (status) {
     report(e, err);
@@ -180,7 +180,7 @@ static int setup_space(struct engine *e) {
   for (int d = 1; d < c->dimension; d++) edge = fmin(edge, g.edge[d]);
   double thickness = init_wall_layers(c, e->kern.support) * c->dx;
   int layers = c->n_walls ? 1 + (int)ceil(2 * thickness / edge) : 1;
-  space_init(&e->space, &g, e->rank, e->n_ranks, layers);
+  space_init(&e->space, &g, e->rank, e->n_ranks, layers, SPACE_TOP_CELLS_PER_RANK);
   e->c_max = 0;
   for (int ph = 0; ph < c->n_phases; ph++) e->c_max = fmax(e->c_max, c->phases[ph].c0);
   return 0;
@@ -210,9 +210,9 @@ static int distribute_particles(struct engine *e) {
   double n_fluid, n_wall;
   engine_global_counts(e, &n_fluid, &n_wall);
   if (e->rank == 0)
-    printf("particles: %.0f fluid, %.0f wall; grid %ld x %ld x %ld cells, halo %d layers, %d ranks\n",
-           n_fluid, n_wall, e->space.grid.n[0], e->space.grid.n[1], e->space.grid.n[2],
-           e->space.halo_layers, e->n_ranks);
+    printf("particles: %.0f fluid, %.0f wall; grid %ld x %ld x %ld cells, halo %d layers, %d ranks; "
+           "top cells of %ld^%d\n", n_fluid, n_wall, e->space.grid.n[0], e->space.grid.n[1],
+           e->space.grid.n[2], e->space.halo_layers, e->n_ranks, e->space.block, e->c->dimension);
   return engine_repartition(e);
 }
 

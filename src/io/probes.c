@@ -160,7 +160,7 @@ static void sample_probe(const struct engine *e, const struct probe *p, int n, d
   double x[3], step;
   for (int i = 0; i < n; i++) {
     sample_point(e, p, i, n, x, &step);
-    if (e->space.owner[grid_cell_clamped(&e->space.grid, x)] != e->rank) continue;
+    if (space_cell_owner(&e->space, grid_cell_clamped(&e->space.grid, x)) != e->rank) continue;
     out[i] = p->kind == PROBE_PRESSURE ? pressure_at(e, p, x) : colour_at(e, p, x);
   }
 }

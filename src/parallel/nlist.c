@@ -31,7 +31,8 @@ static void mark_neighbours(const struct nlist *l, const struct parts *p, long i
 /* Fluid particles of cell c. */
 static long fluid_in_cell(const struct space *s, const struct parts *p, long c) {
   long n = 0;
-  for (long i = s->cell_start[c]; i < s->cell_start[c] + s->cell_count[c]; i++) n += p->phase[i] != PHASE_WALL;
+  long first = space_cell_first(s, c), end = first + space_cell_size(s, c);
+  for (long i = first; i < end; i++) n += p->phase[i] != PHASE_WALL;
   return n;
 }
 
@@ -51,13 +52,13 @@ void nlist_build(struct nlist *l, const struct space *s, const struct parts *p, 
   l->cells = grow(l->cells, &l->cell_capacity, s->n_owned_cells, sizeof(struct nlist_cell));
   long n = 0;
   for (long k = 0; k < s->n_owned_cells; k++) {
-    long c = s->owned_cells[k], first = s->cell_start[c];
+    long c = s->owned_cells[k], first = space_cell_first(s, c), end = first + space_cell_size(s, c);
     struct neighbour_ranges r;
     neighbour_ranges(s, c, &r);
     long words = place_cell(l, k, &r, fluid_in_cell(s, p, c), n);
     l->bits = grow(l->bits, &l->capacity, n + words, sizeof(uint64_t));
     if (words > 0) memset(l->bits + n, 0, words * sizeof(uint64_t));   /* bits may still be NULL */
-    for (long i = first; i < first + s->cell_count[c]; i++) {
+    for (long i = first; i < end; i++) {
       if (p->phase[i] == PHASE_WALL) continue;
       mark_neighbours(l, p, i, &r, l->bits + n);
       n += l->cells[k].words;

@@ -67,7 +67,7 @@ static void mark_cells_out(const struct space *s, char *mark /* n_ranks x n_owne
   for (long k = 0; k < s->n_owned_cells; k++) {
     int n = grid_stencil(&s->grid, s->owned_cells[k], s->halo_layers, nb);
     for (int j = 0; j < n; j++) {
-      int r = s->owner[nb[j]];
+      int r = space_cell_owner(s, nb[j]);
       if (r != s->rank) mark[(long)r * s->n_owned_cells + k] = 1;
     }
   }
@@ -135,7 +135,7 @@ void halo_free(struct halo *h) {
 /* Fill send_index with the owned slots of the particles in cells_out. */
 static void collect_send(struct proxy *px, const struct space *s) {
   long n = 0;
-  for (long k = 0; k < px->n_cells_out; k++) n += s->cell_count[px->cells_out[k]];
+  for (long k = 0; k < px->n_cells_out; k++) n += space_cell_size(s, px->cells_out[k]);
   if (n > px->send_index_cap) {
     px->send_index_cap = n + n / 4 + 64;
     px->send_index = mem_realloc(px->send_index, mem_bytes(px->send_index_cap, sizeof(long), "halo send index"),
@@ -143,8 +143,8 @@ static void collect_send(struct proxy *px, const struct space *s) {
   }
   px->n_send = 0;
   for (long k = 0; k < px->n_cells_out; k++) {
-    long c = px->cells_out[k], start = s->cell_start[c];
-    for (int j = 0; j < s->cell_count[c]; j++) px->send_index[px->n_send++] = start + j;
+    long c = px->cells_out[k], start = space_cell_first(s, c), count = space_cell_size(s, c);
+    for (long j = 0; j < count; j++) px->send_index[px->n_send++] = start + j;
   }
 }
 
@@ -236,7 +236,7 @@ void halo_update(struct halo *h, const struct parts *p, double *const *fields, i
 /* The id of an owned particle whose new owner is neither this rank nor a neighbour, or -1. */
 static int64_t first_lost(const struct halo *h, const struct space *s, const struct parts *p) {
   for (long i = 0; i < p->n_owned; i++) {
-    int dest = s->owner[p->cell[i]];
+    int dest = space_cell_owner(s, p->cell[i]);
     if (dest != s->rank && h->proxy_of_rank[dest] < 0) return p->id[i];
   }
   return -1;
@@ -248,7 +248,7 @@ static void pack_strays(struct halo *h, const struct space *s, struct parts *p, 
   int w = parts_packed_size(p, PART_MIGRATE);
   long kept = 0;
   for (long i = 0; i < p->n_owned; i++) {
-    int dest = s->owner[p->cell[i]];
+    int dest = space_cell_owner(s, p->cell[i]);
     if (dest == s->rank) {
       if (kept != i) parts_copy_one(p, kept, p, i);
       kept++;

@@ -9,9 +9,9 @@ static long *group_by_owner(const struct space *s, const struct parts *p, int *s
   int nr = s->n_ranks;
   long *offset = mem_calloc(nr + 1, sizeof(long), "migration offsets");
   long *order = mem_calloc(p->n_owned + 1, sizeof(long), "migration order");
-  for (long i = 0; i < p->n_owned; i++) send_count[s->owner[p->cell[i]]]++;
+  for (long i = 0; i < p->n_owned; i++) send_count[space_cell_owner(s, p->cell[i])]++;
   for (int r = 0; r < nr; r++) offset[r + 1] = offset[r] + send_count[r];
-  for (long i = 0; i < p->n_owned; i++) order[offset[s->owner[p->cell[i]]]++] = i;
+  for (long i = 0; i < p->n_owned; i++) order[offset[space_cell_owner(s, p->cell[i])]++] = i;
   free(offset);
   return order;
 }

@@ -1,4 +1,5 @@
-/* space.c — cell ownership, particle sorting by (cell, id) and the cell index. */
+/* space.c — the two-level cell space: top cells and their owners, the fine-cell index over the
+ * local top cells, particle sorting by (cell, id). */
 #include <stdlib.h>
 #include <string.h>
 #include "parallel/space.h"
@@ -7,40 +8,153 @@
 /* Zeroed cell-index arrays (out of memory ends the run, mem.h). */
 static void *xcalloc(size_t n, size_t size) { return mem_calloc(n, size, "cell index"); }
 
-void space_init(struct space *s, const struct grid *g, int rank, int n_ranks, int halo_layers) {
+/* Top cells of the grid over g's fine cells with blocks of b fine cells per axis. */
+static long top_cells_for(const struct grid *g, long b) {
+  long n = 1;
+  for (int d = 0; d < g->dim; d++) n *= (g->n[d] + b - 1) / b;
+  return n;
+}
+
+/* The block edge [fine cells] of the top grid: the largest leaving per_rank top cells per rank,
+ * then grown until the top grid has at most SPACE_TOP_CELLS_MAX cells. */
+static long top_block(const struct grid *g, int n_ranks, long per_rank) {
+  long longest = 1, b = 1;
+  for (int d = 0; d < g->dim; d++)
+    if (g->n[d] > longest) longest = g->n[d];
+  while (b < longest && top_cells_for(g, b + 1) >= per_rank * n_ranks) b++;
+  while (top_cells_for(g, b) > SPACE_TOP_CELLS_MAX) b++;
+  return b;
+}
+
+/* The top grid over fine grid g with blocks of b fine cells per axis. */
+static struct grid top_grid(const struct grid *g, long b) {
+  struct grid t = *g;
+  t.n_cells = 1;
+  for (int d = 0; d < g->dim; d++) {
+    t.n[d] = (g->n[d] + b - 1) / b;
+    t.edge[d] = g->edge[d] * (double)b;
+    t.max[d] = t.min[d] + t.edge[d] * (double)t.n[d];
+    t.n_cells *= t.n[d];
+  }
+  return t;
+}
+
+void space_init(struct space *s, const struct grid *g, int rank, int n_ranks, int halo_layers,
+                long top_cells_per_rank) {
   memset(s, 0, sizeof(*s));
   s->grid = *g;
+  s->block = top_block(g, n_ranks, top_cells_per_rank);
+  s->top = top_grid(g, s->block);
+  s->cells_per_top = 1;
+  for (int d = 0; d < g->dim; d++) s->cells_per_top *= s->block;
   s->rank = rank;
   s->n_ranks = n_ranks;
   s->halo_layers = halo_layers;
-  s->owner = xcalloc(g->n_cells, sizeof(int));
-  s->cell_start = xcalloc(g->n_cells, sizeof(long));
-  s->cell_count = xcalloc(g->n_cells, sizeof(int));
-  s->owned_cells = xcalloc(g->n_cells, sizeof(int));
-  s->bucket = xcalloc(g->n_cells + 1, sizeof(int));
+  s->top_owner = xcalloc(s->top.n_cells, sizeof(int));
+  s->top_slot = xcalloc(s->top.n_cells, sizeof(int));
+}
+
+/* Free the fine-cell index of the local top cells. */
+static void free_fine(struct space *s) {
+  free(s->cell_start);
+  free(s->cell_count);
+  free(s->local_order);
+  free(s->rank_of_local);
+  free(s->owned_cells);
+  free(s->bucket);
+  s->cell_start = NULL;
+  s->cell_count = s->local_order = s->rank_of_local = s->owned_cells = s->bucket = NULL;
 }
 
 void space_free(struct space *s) {
-  free(s->owner);
-  free(s->cell_start);
-  free(s->cell_count);
-  free(s->owned_cells);
-  free(s->bucket);
+  free_fine(s);
+  free(s->top_owner);
+  free(s->top_slot);
   free(s->order);
   free(s->scratch);
   memset(s, 0, sizeof(*s));
 }
 
 long space_bytes(const struct space *s) {
-  long per_cell = 4 * (long)sizeof(int) + (long)sizeof(long);   /* owner, count, owned, bucket; start */
-  return s->grid.n_cells * per_cell + s->scratch_capacity * (long)(sizeof(int) + sizeof(double));
+  long slots = s->n_local_tops * s->cells_per_top;
+  long per_slot = (long)sizeof(long) + 3 * (long)sizeof(int);   /* start; count, rank, bucket */
+  return s->top.n_cells * 2 * (long)sizeof(int) + slots * per_slot +
+         (s->n_local_cells + s->n_owned_cells) * (long)sizeof(int) +
+         s->scratch_capacity * (long)(sizeof(int) + sizeof(double));
 }
 
-void space_set_owner(struct space *s, const int *owner) {
-  memcpy(s->owner, owner, s->grid.n_cells * sizeof(int));
+/* Mark in top_slot (as 1) the top cells owned by this rank and those within reach of them. */
+static void mark_local_tops(struct space *s) {
+  int reach = (int)((s->halo_layers + s->block - 1) / s->block);
+  long *nb = mem_calloc(grid_stencil_size(&s->top, reach), sizeof(long), "top cell stencil");
+  memset(s->top_slot, 0, s->top.n_cells * sizeof(int));
+  for (long t = 0; t < s->top.n_cells; t++) {
+    if (s->top_owner[t] != s->rank) continue;
+    int n = grid_stencil(&s->top, t, reach, nb);
+    for (int j = 0; j < n; j++) s->top_slot[nb[j]] = 1;
+  }
+  free(nb);
+  s->n_local_tops = 0;
+  for (long t = 0; t < s->top.n_cells; t++)
+    s->top_slot[t] = s->top_slot[t] ? (int)s->n_local_tops++ : -1;
+}
+
+/* A local fine cell: its global and local index. */
+struct cell_pair {
+  int global, local;
+};
+
+static int by_global(const void *a, const void *b) {
+  int x = ((const struct cell_pair *)a)->global, y = ((const struct cell_pair *)b)->global;
+  return (x > y) - (x < y);
+}
+
+/* The local fine cells inside the domain, sorted by global index. Sets n_local_cells. */
+static struct cell_pair *local_cells_sorted(struct space *s) {
+  const long *n = s->grid.n, *tn = s->top.n, b = s->block;
+  struct cell_pair *cells = mem_calloc(s->n_local_tops * s->cells_per_top + 1, sizeof(*cells),
+                                       "local cell list");
+  long count = 0;
+  for (long t = 0; t < s->top.n_cells; t++) {
+    if (s->top_slot[t] < 0) continue;
+    long tx = t % tn[0], ty = (t / tn[0]) % tn[1], tz = t / (tn[0] * tn[1]);
+    long bz = s->grid.dim == 3 ? b : 1;
+    for (long z = tz * bz; z < (tz + 1) * bz && z < n[2]; z++)
+      for (long y = ty * b; y < (ty + 1) * b && y < n[1]; y++)
+        for (long x = tx * b; x < (tx + 1) * b && x < n[0]; x++)
+          cells[count++] = (struct cell_pair){(int)(x + n[0] * (y + n[1] * z)),
+                                              (int)space_local_xyz(s, x, y, z)};
+  }
+  qsort(cells, count, sizeof(*cells), by_global);
+  s->n_local_cells = count;
+  return cells;
+}
+
+/* Allocate the fine-cell index of the local top cells; fill local_order, rank_of_local and the
+ * owned cells. */
+static void build_fine(struct space *s) {
+  long slots = s->n_local_tops * s->cells_per_top;
+  s->cell_start = xcalloc(slots + 1, sizeof(long));
+  s->cell_count = xcalloc(slots + 1, sizeof(int));
+  s->rank_of_local = xcalloc(slots + 1, sizeof(int));
+  s->bucket = xcalloc(slots + 1, sizeof(int));
+  struct cell_pair *cells = local_cells_sorted(s);
+  s->local_order = xcalloc(s->n_local_cells + 1, sizeof(int));
+  s->owned_cells = xcalloc(s->n_local_cells + 1, sizeof(int));
   s->n_owned_cells = 0;
-  for (long c = 0; c < s->grid.n_cells; c++)
-    if (owner[c] == s->rank) s->owned_cells[s->n_owned_cells++] = (int)c;
+  for (long k = 0; k < s->n_local_cells; k++) {
+    s->local_order[k] = cells[k].local;
+    s->rank_of_local[cells[k].local] = (int)k;
+    if (space_cell_owner(s, cells[k].global) == s->rank) s->owned_cells[s->n_owned_cells++] = cells[k].global;
+  }
+  free(cells);
+}
+
+void space_set_owner(struct space *s, const int *top_owner) {
+  memcpy(s->top_owner, top_owner, s->top.n_cells * sizeof(int));
+  free_fine(s);
+  mark_local_tops(s);
+  build_fine(s);
 }
 
 long space_assign_cells(const struct space *s, struct parts *p, long first, long n) {
@@ -62,13 +176,17 @@ static void ensure_scratch(struct space *s, long n) {
   s->scratch_capacity = n;
 }
 
-/* Counting sort by cell into s->order, then insertion sort by id inside each cell. */
+/* Counting sort by the cells' positions in global order into s->order (the keys held in the
+ * scratch meanwhile), then insertion sort by id inside each cell. */
 static void sort_order(struct space *s, const struct parts *p, long first, long n) {
-  int *bucket = s->bucket;
-  memset(bucket, 0, (s->grid.n_cells + 1) * sizeof(int));
-  for (long i = 0; i < n; i++) bucket[p->cell[first + i] + 1]++;
-  for (long c = 0; c < s->grid.n_cells; c++) bucket[c + 1] += bucket[c];
-  for (long i = 0; i < n; i++) s->order[bucket[p->cell[first + i]]++] = (int)(first + i);
+  int *bucket = s->bucket, *key = (int *)s->scratch;
+  memset(bucket, 0, (s->n_local_cells + 1) * sizeof(int));
+  for (long i = 0; i < n; i++) {
+    key[i] = s->rank_of_local[space_local_cell(s, p->cell[first + i])];
+    bucket[key[i] + 1]++;
+  }
+  for (long k = 0; k < s->n_local_cells; k++) bucket[k + 1] += bucket[k];
+  for (long i = 0; i < n; i++) s->order[bucket[key[i]]++] = (int)(first + i);
   for (long k = 1; k < n; k++) {
     int cur = s->order[k];
     long j = k;
@@ -103,22 +221,30 @@ void space_sort(struct space *s, struct parts *p, long first, long n) {
 }
 
 void space_index(struct space *s, const struct parts *p) {
-  memset(s->cell_count, 0, s->grid.n_cells * sizeof(int));
+  memset(s->cell_count, 0, s->n_local_tops * s->cells_per_top * sizeof(int));
   long n = p->n_owned + p->n_halo;
   for (long i = 0; i < n; i++) {
-    int c = p->cell[i];
-    if (s->cell_count[c]++ == 0) s->cell_start[c] = i;
+    long l = space_local_cell(s, p->cell[i]);
+    if (s->cell_count[l]++ == 0) s->cell_start[l] = i;
   }
 }
 
 void neighbour_ranges(const struct space *s, long c, struct neighbour_ranges *r) {
-  long nb[27];
-  int n = grid_stencil(&s->grid, c, 1, nb);
+  const long *n = s->grid.n;
+  long ix = c % n[0], iy = (c / n[0]) % n[1], iz = c / (n[0] * n[1]);
+  long lz = s->grid.dim == 3 ? 1 : 0;
   r->n = 0;
-  for (int k = 0; k < n; k++) {
-    int count = s->cell_count[nb[k]];
-    if (!count) continue;
-    r->start[r->n] = s->cell_start[nb[k]];
-    r->count[r->n++] = count;
+  for (long z = iz - lz; z <= iz + lz; z++) {
+    if (z < 0 || z >= n[2]) continue;
+    for (long y = iy - 1; y <= iy + 1; y++) {
+      if (y < 0 || y >= n[1]) continue;
+      for (long x = ix - 1; x <= ix + 1; x++) {
+        if (x < 0 || x >= n[0]) continue;
+        long l = space_local_xyz(s, x, y, z);
+        if (l < 0 || !s->cell_count[l]) continue;
+        r->start[r->n] = s->cell_start[l];
+        r->count[r->n++] = s->cell_count[l];
+      }
+    }
   }
 }

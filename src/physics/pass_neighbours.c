@@ -5,13 +5,14 @@ void pass_for_each_owned(struct engine *e, particle_fn fluid, particle_fn wall) 
   const struct space *s = &e->space;
   const struct parts *p = &e->p;
   for (long k = 0; k < s->n_owned_cells; k++) {
-    long c = s->owned_cells[k], first = s->cell_start[c];
-    if (!s->cell_count[c]) continue;
+    long c = s->owned_cells[k], count = space_cell_size(s, c);
+    if (!count) continue;
+    long first = space_cell_first(s, c);
     struct neighbour_ranges r;
     neighbour_ranges(s, c, &r);
     nlist_enter_cell(&e->nl, &r);
     long f = 0;   /* fluid particles of the cell before slot i */
-    for (long i = first; i < first + s->cell_count[c]; i++) {
+    for (long i = first; i < first + count; i++) {
       int is_wall = p->phase[i] == PHASE_WALL;
       particle_fn fn = is_wall ? wall : fluid;
       if (fn) {
