@@ -24,7 +24,15 @@ case=cases/hydrostatic-1phase/case.yaml
 expect 0 "usage" -- build/mpsph --help
 expect 0 "^mpsph " -- build/mpsph --version
 expect 0 "# particles: 625 fluid" -- build/mpsph check "$case"
-expect 0 "# memory: about [0-9.]+ MB on one rank \(450 bytes per particle" -- build/mpsph check "$case"
+expect 0 "# memory: about [0-9.]+ MB per rank on 1 rank \(1117 particles with the halo at 450 bytes" -- build/mpsph check "$case"
+# --ranks N: the estimate per rank for N ranks (a share and its halo), check only, N a whole number.
+expect 0 "# memory: about [0-9.]+ MB per rank on 8 ranks \(1117 particles with the halo" -- build/mpsph check "$case" --ranks 8
+expect 0 "# memory: about [0-9.]+ MB per rank on 4 ranks \(16463 particles with the halo" -- \
+  build/mpsph check "$case" --set resolution.dx=0.005 --ranks 4
+expect 1 "^mpsph: --ranks: got '0', expected a whole number of ranks from 1" -- build/mpsph check "$case" --ranks 0
+expect 1 "^mpsph: --ranks: got '2x'" -- build/mpsph check "$case" --ranks 2x
+expect 1 "^mpsph: --ranks: given twice" -- build/mpsph check "$case" --ranks 2 --ranks 3
+expect 1 "^mpsph: --ranks: only with check" -- build/mpsph run "$case" --ranks 2
 expect 0 "# particles: up to 1e\+10 .*not counted" -- \
   env MPSPH_MEMORY_AVAILABLE=16e9 build/mpsph check "$case" --set resolution.dx=1e-5
 expect 1 "usage" -- build/mpsph

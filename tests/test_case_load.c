@@ -428,10 +428,10 @@ static void test_lattice_origin(void) {
   struct init_counts own, common;
   char msg[256];
   CHECK(load(tank, 0, NULL, &c) == 0 && !c.has_lattice_origin, "loads: %s", err);
-  CHECK(init_particles(&c, 0.04, 0, 1, NULL, &own, msg, sizeof msg) == 0, "counts: %s", msg);
+  CHECK(init_particles(&c, 0.04, NULL, &own, msg, sizeof msg) == 0, "counts: %s", msg);
   const char *set[] = {"resolution.origin=[0, 0]"};
   CHECK(load(tank, 1, set, &c) == 0 && c.has_lattice_origin, "loads with origin: %s", err);
-  CHECK(init_particles(&c, 0.04, 0, 1, NULL, &common, msg, sizeof msg) == 0, "counts: %s", msg);
+  CHECK(init_particles(&c, 0.04, NULL, &common, msg, sizeof msg) == 0, "counts: %s", msg);
   CHECK(own.fluid[1] == 24 * 50 && common.fluid[1] == 25 * 50 && common.fluid[0] == 25 * 50,
         "air rows: %ld particles on its own lattice (1200 expected), %ld on the common one (1250)",
         own.fluid[1], common.fluid[1]);
@@ -457,7 +457,7 @@ static void test_velocity_mode(void) {
   char msg[256];
   CHECK(load(text, 0, NULL, &c) == 0 && c.fluids[1].mode.active, "loads: %s", err);
   parts_init(&p, 2, 16, 0);
-  CHECK(init_particles(&c, 0.1, 0, 1, &p, &n, msg, sizeof msg) == 0 && p.n_owned == 400, "init: %s", msg);
+  CHECK(init_particles(&c, 0.1, &p, &n, msg, sizeof msg) == 0 && p.n_owned == 400, "init: %s", msg);
   double k = 4 * acos(-1.0), worst = 0, jump_n = 0, jump_t = 0;
   for (long i = 0; i < p.n_owned; i++) {
     double x = p.x[0][i], dy = p.x[1][i] - 0.5, decay = 0.02 * exp(-k * fabs(dy));

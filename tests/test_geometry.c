@@ -61,14 +61,16 @@ static void check_concave_polygon(void) {
 
 static void check_lattice(void) {
   struct lattice l;
-  double anchor[2] = {0, 0}, lo[2] = {0, 0}, hi[2] = {1, 0.5}, x[3];
+  double anchor[2] = {0, 0}, lo[2] = {0, 0}, hi[2] = {1, 0.5}, x[3] = {0, 0, 0};
   lattice_cover(&l, 2, 0.1, anchor, lo, hi);
   long inside = 0;
   struct shape b = box2(0, 0, 1, 0.5);
-  for (long n = 0; n < lattice_size(&l); n++) {
-    lattice_node(&l, n, x);
-    inside += shape_contains(&b, 2, x);
-  }
+  for (long j = 0; j < l.count[1]; j++)
+    for (long i = 0; i < l.count[0]; i++) {
+      x[0] = lattice_coord(&l, 0, i);
+      x[1] = lattice_coord(&l, 1, j);
+      inside += shape_contains(&b, 2, x);
+    }
   CHECK(inside == 50, "a 1 x 0.5 box at dx 0.1 holds 50 nodes, got %ld", inside);
 }
 

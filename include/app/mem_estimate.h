@@ -10,7 +10,8 @@ struct mem_estimate {
   double particles;        /* the rank's share of the particles plus its halo [-] */
   double bytes_per_particle;
   double process;          /* baseline of a process: MPI, HDF5, code */
-  double cells;            /* the cell grid (every rank holds all of it; METIS on rank 0) */
+  double cells;            /* top-cell owners, their METIS graph (rank 0), the rank's cell index */
+  double startup;          /* the rows of lattice nodes counted at start-up */
   double total;
 };
 

@@ -49,11 +49,10 @@ struct lattice {
 void lattice_cover(struct lattice *l, int dim, double dx, const double *anchor,
                    const double *lo, const double *hi);
 
-/** Number of nodes of the lattice. */
-long lattice_size(const struct lattice *l);
-
-/** Position of node number n (row-major, x fastest). */
-void lattice_node(const struct lattice *l, long n, double *x);
+/** Coordinate along axis d of the lattice's node i of that axis (0 <= i < count[d]) [m]. */
+static inline double lattice_coord(const struct lattice *l, int d, long i) {
+  return l->origin[d] + ((double)(l->first[d] + i) + 0.5) * l->dx;
+}
 
 /** Anchor of the lattice used to fill shape s: box min, circle centre - radius, polygon bbox min. */
 void shape_anchor(const struct shape *s, int dim, double *anchor);

@@ -231,6 +231,29 @@ int engine_rebuild(struct engine *e);
 /** Re-partition the cells with METIS from the current particle weights and redistribute. */
 int engine_repartition(struct engine *e);
 
+/** The cell grid of case c for a kernel support of `support` m (cell edge at least
+ *  ENGINE_CELL_SKIN supports). Returns 0, or 1 when it would have more than 2^31 cells. */
+int engine_cell_grid(const struct case_def *c, double support, struct grid *g);
+
+/** The halo depth [cells] of case c on cell grid g: 1 without walls; with walls
+ *  1 + ceil(2 wall thickness / smallest cell edge), since a ghost's mirror point lies up to twice
+ *  the wall thickness away and its interpolation reaches one support further. */
+int engine_halo_layers(const struct case_def *c, const struct grid *g, double support);
+
+/** Partition the top cells with METIS by `weight` (one per top cell, read on rank 0) and adopt
+ *  the result in the space. Returns 0, or 1 with a message on rank 0. Collective. */
+int engine_adopt_partition(struct engine *e, const int64_t *weight);
+
+/** Generate the initial particles (src/engine/startup.c): count the lattice rows in parallel,
+ *  partition the top cells by the counted work, generate on each rank only its own particles
+ *  with the ids of a serial generation; print the counts line. Returns 0, or 1 with a message on
+ *  rank 0 (bad input). Collective. */
+int engine_generate(struct engine *e);
+
+/** Work units of a particle for the partition's weights: a fluid particle's pair passes cost
+ *  about four times a ghost's interpolation. */
+static inline int engine_particle_work(int phase) { return phase == PHASE_WALL ? 2 : 8; }
+
 /** The largest distance a particle may move within one step: half the cell skin, so that the
  *  cells and neighbour lists built at the start of the step hold every pair in the kernel
  *  support at every stage [m]. */

@@ -87,6 +87,14 @@ static inline int space_cell_size(const struct space *s, long c) {
   return l < 0 ? 0 : s->cell_count[l];
 }
 
+/** The block edge [cells] of the top grid over fine grid g on n_ranks ranks: the largest that
+ *  leaves per_rank top cells per rank (1 when the grid is too small for that), then grown until
+ *  the top grid has at most SPACE_TOP_CELLS_MAX cells. */
+long space_top_block(const struct grid *g, int n_ranks, long per_rank);
+
+/** The top grid over fine grid g with blocks of b cells per axis. */
+struct grid space_top_grid(const struct grid *g, long b);
+
 /** The particle ranges of the 3^dim cells around cell c (those present on this rank). */
 void neighbour_ranges(const struct space *s, long c, struct neighbour_ranges *r);
 

@@ -14,11 +14,12 @@
 static const char *usage =
     "usage:\n"
     "  mpirun -n N mpsph run CASE.yaml [-o OUTDIR] [--set key.path=value ...] [--restart [FILE]]\n"
-    "  mpsph check CASE.yaml [--set key.path=value ...]\n"
+    "  mpsph check CASE.yaml [--set key.path=value ...] [--ranks N]\n"
     "  mpsph --help | --version\n"
     "\n"
     "run    runs the case; output goes to OUTDIR (default runs/<case name>)\n"
-    "check  validates the case, prints the resolved case and the particle counts\n"
+    "check  validates the case, prints the resolved case, the particle counts and the memory per\n"
+    "       rank of a run on N ranks (default 1), without generating the particles\n"
     "--set  overrides any key of the case file, e.g. --set resolution.dx=0.005 --set time.end=0.5\n"
     "--restart  continues from FILE (default OUTDIR/checkpoint.h5), on any number of ranks\n"
     "SIGTERM, SIGINT or SIGUSR1 stop a run cleanly: it writes OUTDIR/checkpoint.h5 and exits 0\n"
@@ -30,7 +31,22 @@ struct args {
   const char *restart_path;   /* its FILE, or NULL for OUTDIR/checkpoint.h5 */
   int n_sets;
   char **sets;                /* the --set values, room for every argument */
+  long ranks;                 /* check --ranks N, else 0 */
 };
+
+#define MAX_RANKS 100000000L  /* check --ranks: the largest rank count it takes */
+
+/* --ranks N: a whole number in [1, MAX_RANKS], once. Returns 0, or 1 with a message in err. */
+static int set_ranks(struct args *a, const char *value, char *err, size_t len) {
+  char *end;
+  long n = strtol(value, &end, 10);
+  if (a->ranks) return snprintf(err, len, "--ranks: given twice, expected it once"), 1;
+  if (!*value || *end || n < 1 || n > MAX_RANKS)
+    return snprintf(err, len, "--ranks: got '%s', expected a whole number of ranks from 1 to %ld",
+                    value, MAX_RANKS), 1;
+  a->ranks = n;
+  return 0;
+}
 
 /* The argument after option argv[k] (-o, --set), or NULL with a message in err when there is none. */
 static const char *option_value(int argc, char **argv, int k, char *err, size_t len) {
@@ -55,11 +71,13 @@ static int parse_args(int argc, char **argv, struct args *a, char *err, size_t l
   if (argc < 2) return snprintf(err, len, "no command given\n%s", usage), 1;
   a->command = argv[1];
   for (int k = 2; k < argc; k++) {
-    if (!strcmp(argv[k], "-o") || !strcmp(argv[k], "--set")) {
+    if (!strcmp(argv[k], "-o") || !strcmp(argv[k], "--set") || !strcmp(argv[k], "--ranks")) {
       const char *value = option_value(argc, argv, k++, err, len);
       if (!value) return 1;
-      if (argv[k - 1][1] == '-') a->sets[a->n_sets++] = argv[k];
-      else if (set_outdir(a, value, err, len)) return 1;
+      if (!strcmp(argv[k - 1], "--set")) a->sets[a->n_sets++] = argv[k];
+      else if (!strcmp(argv[k - 1], "--ranks")) {
+        if (set_ranks(a, value, err, len)) return 1;
+      } else if (set_outdir(a, value, err, len)) return 1;
     } else if (!strcmp(argv[k], "--restart")) {
       if (a->restart) return snprintf(err, len, "--restart: given twice, expected it once"), 1;
       a->restart = 1;   /* FILE follows when the case file is already named */
@@ -75,6 +93,8 @@ static int parse_args(int argc, char **argv, struct args *a, char *err, size_t l
   if (!a->case_path) return snprintf(err, len, "%s needs a case file\n%s", a->command, usage), 1;
   if ((a->restart || a->outdir) && strcmp(a->command, "run"))
     return snprintf(err, len, "%s: only with run\n%s", a->restart ? "--restart" : "-o", usage), 1;
+  if (a->ranks && strcmp(a->command, "check"))
+    return snprintf(err, len, "--ranks: only with check (run takes its ranks from mpirun)\n%s", usage), 1;
   return 0;
 }
 
@@ -131,7 +151,7 @@ int main(int argc, char **argv) {
   if (!status) status = case_load(a.case_path, a.n_sets, a.sets, &c, err, sizeof(err));
   if (!status) status = supported(&c, err, sizeof(err));
   if (status && rank == 0) fprintf(stderr, "mpsph: %s\n", err);
-  if (!status) status = !strcmp(a.command, "check") ? (rank == 0 ? preflight_check(&c) : 0) : run_case(&c, &a);
+  if (!status) status = !strcmp(a.command, "check") ? (rank == 0 ? preflight_check(&c, a.ranks ? (int)a.ranks : 1) : 0) : run_case(&c, &a);
   free(a.sets);
   MPI_Finalize();
   return status;

@@ -1,23 +1,30 @@
-/* mem_estimate.c — memory per rank of a run and memory available on a node. The constants were
- * measured with the peak resident size that the end-of-run summary prints (engine_report.c),
- * between two resolutions of the same case on one rank, with the neighbour lists as bit masks:
- * 380-390 bytes per particle in 2D (the one- and two-phase dam breaks, 4.4e4 to 1.8e5
- * particles), 640 in 3D (the tests' hydrostatic box, 2.2e4 to 5.2e4 particles, 60 % wall ghosts);
- * the constants keep a margin over these. About 25 MB for a process with a few particles; 155
- * bytes per cell of a 2D grid on the rank that runs METIS. */
+/* mem_estimate.c — memory per rank of a run, from a model of the layout of issue 22, and memory
+ * available on a node. The per-particle constants were measured with the peak resident size that
+ * the end-of-run summary prints (engine_report.c), between two resolutions of the same case on
+ * one rank, with the neighbour lists as bit masks: 380-390 bytes per particle in 2D (the one- and
+ * two-phase dam breaks, 4.4e4 to 1.8e5 particles), 640 in 3D (the tests' hydrostatic box, 2.2e4 to
+ * 5.2e4 particles, 60 % wall ghosts); the constants keep a margin over these. The cells: every
+ * rank holds an owner per top cell; rank 0 builds the METIS graph of the top cells; a rank holds
+ * the cell index of its own region and its halo's reach only; at start-up every rank holds the
+ * particle count and first id of every row of lattice nodes (engine/startup.c). */
 #include "app/mem_estimate.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <unistd.h>
+#include "case/init.h"
+#include "engine/engine.h"
 
 #define BYTES_PER_PARTICLE_2D 450.0
 #define BYTES_PER_PARTICLE_3D 800.0
 #define PROCESS_BYTES 30e6
-#define CELL_BYTES_BASE 64.0       /* cell arrays of every rank */
-#define CELL_BYTES_PER_LINK 16.0   /* METIS graph and work arrays per neighbour link */
-#define HALO_CELLS 3               /* halo depth [cells of about one support] with walls */
+#define TOP_CELL_BYTES 8.0            /* owner and local slot of each top cell, every rank */
+#define METIS_BYTES_BASE 64.0         /* METIS graph of the top cells on rank 0: per vertex */
+#define METIS_BYTES_PER_LINK 16.0     /* and per neighbour link */
+#define LOCAL_CELL_BYTES 24.0         /* cell index of a local cell: start, count, order, rank, bucket */
+#define ROW_BYTES 12.0                /* start-up: count and first id of a row of lattice nodes */
+#define HALO_CELLS 3                  /* halo depth [cells of about one support] with walls */
 
 /* Halo particles around a share of n particles held as a square (cube) of side n^(1/dim) dx,
  * in a band HALO_CELLS cells deep; at most the other ranks' particles. */
@@ -28,24 +35,41 @@ static double halo_particles(const struct case_def *c, double support, double sh
   return fmin(halo, total - share);
 }
 
-/* Cells of the grid: at most the domain volume over support^dim, one per axis at least. */
-static double grid_cells(const struct case_def *c, double support) {
-  double n = 1;
-  for (int d = 0; d < c->dimension; d++)
-    n *= fmax(1.0, (c->domain_max[d] - c->domain_min[d]) / support);
-  return n;
+/* The cell memory of the largest rank (rank 0) [bytes]: the top cells' owners, their METIS
+ * graph, and the cell index of a rank's share of the cells held as a square (cube) grown by the
+ * halo's reach in whole top cells. */
+static double cell_bytes(const struct case_def *c, double support, int n_ranks) {
+  struct grid g;
+  if (engine_cell_grid(c, support, &g)) return INFINITY;
+  long block = space_top_block(&g, n_ranks, SPACE_TOP_CELLS_PER_RANK);
+  struct grid top = space_top_grid(&g, block);
+  int dim = c->dimension, links = dim == 2 ? 8 : 26, layers = engine_halo_layers(c, &g, support);
+  double reach = (double)block * ceil((double)layers / (double)block);
+  double side = pow((double)g.n_cells / n_ranks, 1.0 / dim);
+  double local = fmin((double)g.n_cells, pow(side + 2 * reach, dim));
+  double metis = n_ranks > 1 ? METIS_BYTES_BASE + METIS_BYTES_PER_LINK * links : 0;
+  return (double)top.n_cells * (TOP_CELL_BYTES + metis) + local * LOCAL_CELL_BYTES;
+}
+
+/* The start-up's row arrays [bytes]. */
+static double startup_bytes(const struct case_def *c, double support) {
+  struct init_rows rows;
+  init_rows_open(&rows, c, support);
+  double bytes = (double)rows.n_rows * ROW_BYTES;
+  init_rows_close(&rows);
+  return bytes;
 }
 
 struct mem_estimate mem_estimate_rank(const struct case_def *c, double support, double n_particles,
                                       int n_ranks) {
   struct mem_estimate m;
-  int links = c->dimension == 2 ? 8 : 26;
   double share = n_particles / n_ranks;
   m.particles = share + (n_ranks > 1 ? halo_particles(c, support, share, n_particles) : 0);
   m.bytes_per_particle = c->dimension == 2 ? BYTES_PER_PARTICLE_2D : BYTES_PER_PARTICLE_3D;
   m.process = PROCESS_BYTES;
-  m.cells = grid_cells(c, support) * (CELL_BYTES_BASE + CELL_BYTES_PER_LINK * links);
-  m.total = m.process + m.cells + m.particles * m.bytes_per_particle;
+  m.cells = cell_bytes(c, support, n_ranks);
+  m.startup = startup_bytes(c, support);
+  m.total = m.process + m.cells + m.startup + m.particles * m.bytes_per_particle;
   return m;
 }
 

@@ -15,6 +15,8 @@
 #include "io/outdir.h"
 
 #define COUNT_GUARD 10.0   /* a bound needing this many times the memory available: not counted */
+#define COUNT_MAX_NODES 2e9   /* check: a bound on the nodes to visit above which it does not count
+                                 (about 75 ns a node on one core: 2.5 minutes) */
 #define ERR_LEN 1024
 /* Open MPI's MPI-IO (sharedfp component lockedfile) writes "<file>.locktest.<rank>" into a buffer
  * of this many bytes at every MPI_File_open, with sprintf: a longer file path aborts the process. */
@@ -44,7 +46,8 @@ static int size_case(const struct case_def *c, int n_ranks, double available, in
   s->counted = 0;
   double bound_bytes = mem_estimate_rank(c, k.support, s->n, n_ranks).total;
   if (bound_bytes > COUNT_GUARD * available || (bound_bytes <= available && !always)) return 0;
-  if (init_particles(c, k.support, 0, 1, NULL, &s->counts, err, len)) return 1;
+  if (always && s->n > COUNT_MAX_NODES) return 0;
+  if (init_particles(c, k.support, NULL, &s->counts, err, len)) return 1;
   s->n = (double)(s->counts.n_fluid + s->counts.n_wall);
   s->counted = 1;
   return 0;
@@ -169,21 +172,24 @@ static void print_counts(const struct case_def *c, const struct sizing *s) {
   printf("; smoothing length %g m, kernel support %g m\n", c->h_over_dx * c->dx, s->support);
 }
 
-static void print_memory(const struct case_def *c, const struct sizing *s, double available) {
-  struct mem_estimate m = mem_estimate_rank(c, s->support, s->n, 1);
-  char need[32], cells[32], have[32];
-  printf("# memory: about %s on one rank (%.0f bytes per particle, %.0f MB per process, %s of "
-         "cells); %s available on this machine%s\n", bytes_text(m.total, need, sizeof need),
-         m.bytes_per_particle, m.process / 1e6, bytes_text(m.cells, cells, sizeof cells),
-         bytes_text(available, have, sizeof have), m.total > available ? ": more than it has" : "");
+static void print_memory(const struct case_def *c, const struct sizing *s, int n_ranks,
+                         double available) {
+  struct mem_estimate m = mem_estimate_rank(c, s->support, s->n, n_ranks);
+  char need[32], cells[32], rows[32], have[32];
+  printf("# memory: about %s per rank on %d rank%s (%.0f particles with the halo at %.0f bytes "
+         "each, %.0f MB per process, %s of cells, %s of start-up rows); %s available on this "
+         "machine%s\n", bytes_text(m.total, need, sizeof need), n_ranks, n_ranks == 1 ? "" : "s",
+         m.particles, m.bytes_per_particle, m.process / 1e6, bytes_text(m.cells, cells, sizeof cells),
+         bytes_text(m.startup, rows, sizeof rows), bytes_text(available, have, sizeof have),
+         n_ranks == 1 && m.total > available ? ": more than it has" : "");
 }
 
-int preflight_check(const struct case_def *c) {
+int preflight_check(const struct case_def *c, int n_ranks) {
   struct sizing s;
   char err[ERR_LEN];
   double available = mem_node_available();
   int status = available < 0 ? bad_memory_variable(err, sizeof err) : 0;
-  if (!status) status = size_case(c, 1, available, 1, &s, err, sizeof err);
+  if (!status) status = size_case(c, n_ranks, available, 1, &s, err, sizeof err);
   if (status) {
     fprintf(stderr, "mpsph: %s\n", err);
     return 1;
@@ -192,6 +198,6 @@ int preflight_check(const struct case_def *c) {
   printf("%s", yaml);
   free(yaml);
   print_counts(c, &s);
-  print_memory(c, &s, available);
+  print_memory(c, &s, n_ranks, available);
   return 0;
 }

@@ -226,14 +226,6 @@ void lattice_cover(struct lattice *l, int dim, double dx, const double *anchor,
   }
 }
 
-long lattice_size(const struct lattice *l) { return l->count[0] * l->count[1] * l->count[2]; }
-
-void lattice_node(const struct lattice *l, long n, double *x) {
-  long idx[3] = {n % l->count[0], (n / l->count[0]) % l->count[1], n / (l->count[0] * l->count[1])};
-  for (int d = 0; d < l->dim; d++)
-    x[d] = l->origin[d] + ((double)(l->first[d] + idx[d]) + 0.5) * l->dx;
-  for (int d = l->dim; d < 3; d++) x[d] = 0;
-}
 
 /* ---- polygon validity ---- */
 

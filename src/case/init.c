@@ -118,8 +118,7 @@ static double cell_volume(const struct case_def *c) {
   return c->dimension == 2 ? c->dx * c->dx : c->dx * c->dx * c->dx;
 }
 
-/* Store a fluid particle of region k at x in the next slot of p. */
-static void add_fluid(const struct case_def *c, int k, const double *x, int64_t id, struct parts *p) {
+void init_add_fluid(const struct case_def *c, int k, const double *x, int64_t id, struct parts *p) {
   const struct phase *ph = &c->phases[c->fluids[k].phase];
   long i = p->n_owned++;
   parts_reserve(p, p->n_owned);
@@ -143,9 +142,7 @@ static void add_fluid(const struct case_def *c, int k, const double *x, int64_t 
   }
 }
 
-/* Store a ghost of wall w at x, with the offset 2 (q - x) to its mirror point across the wall
- * boundary point q nearest to x (fixed in the wall's frame). */
-static void add_ghost(const struct case_def *c, int w, const double *x, int64_t id, struct parts *p) {
+void init_add_ghost(const struct case_def *c, int w, const double *x, int64_t id, struct parts *p) {
   long i = p->n_owned++;
   parts_reserve(p, p->n_owned);
   double q[3];
@@ -171,36 +168,6 @@ static int earlier_region(const struct case_def *c, int k, const double *x) {
   return -1;
 }
 
-static int fill_fluids(const struct case_def *c, int rank, int n_ranks, struct parts *p,
-                       struct init_counts *n, int64_t *ordinal, char *err, size_t err_len) {
-  for (int k = 0; k < c->n_fluids; k++) {
-    const struct shape *s = &c->fluids[k].shape;
-    double lo[3], hi[3], anchor[3], x[3];
-    struct lattice l;
-    shape_bbox(s, c->dimension, 0, lo, hi);
-    if (c->has_lattice_origin) memcpy(anchor, c->lattice_origin, sizeof anchor);
-    else shape_anchor(s, c->dimension, anchor);
-    lattice_cover(&l, c->dimension, c->dx, anchor, lo, hi);
-    for (long node = 0, size = lattice_size(&l); node < size; node++) {
-      lattice_node(&l, node, x);
-      if (!shape_contains(s, c->dimension, x) || walls_solid_at(c, NULL, x, NULL) >= 0) continue;
-      if (wall_distance(c, x) < 0.5 * c->dx * (1 - BOUNDARY_TOL)) continue;
-      int j = earlier_region(c, k, x);
-      if (j >= 0) {
-        snprintf(err, err_len, "%s: fluids.%d overlaps fluids.%d (both contain the point (%g, %g%s)); "
-                 "fluid regions must not overlap", c->source_file, k, j, x[0], x[1],
-                 c->dimension == 3 ? ", ..." : "");
-        return 1;
-      }
-      if (p && *ordinal % n_ranks == rank) add_fluid(c, k, x, *ordinal, p);
-      (*ordinal)++;
-      n->fluid[c->fluids[k].phase]++;
-      n->n_fluid++;
-    }
-  }
-  return 0;
-}
-
 /* The first wall before w whose ghost layer contains x, or -1. */
 static int earlier_wall(const struct case_def *c, int w, double thickness, const double *x) {
   for (int j = 0; j < w; j++)
@@ -224,93 +191,213 @@ static int tank_axis(const struct shape *s, int d, double dx, int layers, double
   return n;
 }
 
-/* The candidate ghost nodes of a wall, enumerated without storing them. A tank box gets layers
- * anchored to each of its faces, so every face has ghosts at (k + 1/2) dx whatever the box size;
- * its interior nodes are skipped (they are never ghosts). Other walls use the lattice anchored at
- * the shape's lower corner. */
-struct wall_nodes {
-  int dim, tank, layers;
-  long n[3], count;          /* nodes per axis and in total, interior included */
-  double *axis[3];           /* tank: node coordinates along each axis */
-  struct lattice l;          /* other walls */
-};
+/* A fluid region's lattice, anchored at the case's lattice origin or the shape's anchor. */
+static void open_fluid(struct init_source *s, const struct case_def *c, int k) {
+  const struct shape *sh = &c->fluids[k].shape;
+  double lo[3], hi[3], anchor[3];
+  shape_bbox(sh, c->dimension, 0, lo, hi);
+  if (c->has_lattice_origin) memcpy(anchor, c->lattice_origin, sizeof anchor);
+  else shape_anchor(sh, c->dimension, anchor);
+  lattice_cover(&s->l, c->dimension, c->dx, anchor, lo, hi);
+  for (int d = 0; d < 3; d++) s->n[d] = s->l.count[d];
+}
 
-static void wall_nodes_open(struct wall_nodes *wn, const struct case_def *c, int w, double thickness) {
-  const struct shape *s = &c->walls[w].shape;
-  memset(wn, 0, sizeof *wn);
-  wn->dim = c->dimension;
-  wn->layers = (int)lround(thickness / c->dx);
-  wn->tank = s->kind == SHAPE_BOX && c->walls[w].fluid_side == FLUID_INSIDE;
-  if (wn->tank) {
-    wn->n[1] = wn->n[2] = 1;
-    for (int d = 0; d < wn->dim; d++) {
-      wn->axis[d] = mem_calloc((size_t)((s->max[d] - s->min[d]) / c->dx) + 2 * wn->layers + 4, sizeof(double),
-                               "wall lattice axis");
-      wn->n[d] = tank_axis(s, d, c->dx, wn->layers, wn->axis[d]);
+/* A wall's candidate ghost nodes. A tank box gets layers anchored to each of its faces, so every
+ * face has ghosts at (k + 1/2) dx whatever the box size (its interior nodes are never ghosts and
+ * are skipped); other walls use the lattice anchored at the shape's lower corner. */
+static void open_wall(struct init_source *s, const struct case_def *c, int w, double thickness) {
+  const struct shape *sh = &c->walls[w].shape;
+  s->layers = (int)lround(thickness / c->dx);
+  s->tank = sh->kind == SHAPE_BOX && c->walls[w].fluid_side == FLUID_INSIDE;
+  if (s->tank) {
+    s->n[1] = s->n[2] = 1;
+    for (int d = 0; d < c->dimension; d++) {
+      s->axis[d] = mem_calloc((size_t)((sh->max[d] - sh->min[d]) / c->dx) + 2 * s->layers + 4,
+                              sizeof(double), "wall lattice axis");
+      s->n[d] = tank_axis(sh, d, c->dx, s->layers, s->axis[d]);
     }
-    wn->count = wn->n[0] * wn->n[1] * wn->n[2];
     return;
   }
   double lo[3], hi[3], anchor[3];
-  shape_bbox(s, wn->dim, thickness, lo, hi);
-  shape_anchor(s, wn->dim, anchor);
-  lattice_cover(&wn->l, wn->dim, c->dx, anchor, lo, hi);
-  wn->count = lattice_size(&wn->l);
+  shape_bbox(sh, c->dimension, thickness, lo, hi);
+  shape_anchor(sh, c->dimension, anchor);
+  lattice_cover(&s->l, c->dimension, c->dx, anchor, lo, hi);
+  for (int d = 0; d < 3; d++) s->n[d] = s->l.count[d];
+}
+
+void init_rows_open(struct init_rows *r, const struct case_def *c, double support) {
+  memset(r, 0, sizeof *r);
+  r->thickness = init_wall_layers(c, support) * c->dx;
+  for (int k = 0; k < c->n_fluids + c->n_walls; k++) {
+    struct init_source *s = &r->src[r->n_sources++];
+    s->wall = k < c->n_fluids ? -1 : k - c->n_fluids;
+    if (s->wall < 0) open_fluid(s, c, k);
+    else open_wall(s, c, s->wall, r->thickness);
+    s->first_row = r->n_rows;
+    r->n_rows += s->n[1] * s->n[2];
+  }
+}
+
+void init_rows_close(struct init_rows *r) {
+  for (int k = 0; k < r->n_sources; k++)
+    for (int d = 0; d < 3; d++) free(r->src[k].axis[d]);
+  memset(r, 0, sizeof *r);
+}
+
+int init_row_source(const struct init_rows *r, long row) {
+  int k = 0;
+  while (k + 1 < r->n_sources && r->src[k + 1].first_row <= row) k++;
+  return k;
+}
+
+/* Position of node (ix, iy, iz) of source s. */
+static void node_at(const struct init_source *s, int dim, long ix, long iy, long iz, double *x) {
+  long idx[3] = {ix, iy, iz};
+  for (int d = 0; d < 3; d++) {
+    if (d >= dim) x[d] = 0;
+    else if (s->tank) x[d] = s->axis[d][idx[d]];
+    else x[d] = lattice_coord(&s->l, d, idx[d]);
+  }
 }
 
 /* 1 if index i of an axis with n tank nodes is an interior (not a layer) node. */
-static int tank_interior(const struct wall_nodes *wn, long i, long n) {
-  return i >= wn->layers && i < n - wn->layers;
+static int tank_interior(const struct init_source *s, long i, long n) {
+  return i >= s->layers && i < n - s->layers;
 }
 
-/* The first candidate node at or after node k (tank interior rows skipped). */
-static long wall_nodes_skip(const struct wall_nodes *wn, long k) {
-  if (!wn->tank) return k;
-  long ix = k % wn->n[0], iy = (k / wn->n[0]) % wn->n[1], iz = k / (wn->n[0] * wn->n[1]);
-  int interior_row = tank_interior(wn, iy, wn->n[1]) && (wn->dim == 2 || tank_interior(wn, iz, wn->n[2]));
-  return interior_row && tank_interior(wn, ix, wn->n[0]) ? k - ix + wn->n[0] - wn->layers : k;
+/* The next candidate index at or after ix in row (iy, iz) of s: a tank's interior nodes of an
+ * interior row are skipped. */
+static long next_candidate(const struct init_source *s, int dim, long ix, long iy, long iz) {
+  if (!s->tank || !tank_interior(s, ix, s->n[0])) return ix;
+  int interior_row = tank_interior(s, iy, s->n[1]) && (dim == 2 || tank_interior(s, iz, s->n[2]));
+  return interior_row ? s->n[0] - s->layers : ix;
 }
 
-/* Position of node k. */
-static void wall_nodes_get(const struct wall_nodes *wn, long k, double *x) {
-  if (!wn->tank) {
-    lattice_node(&wn->l, k, x);
+/* Whether fluid node x of region k is a particle: 1 yes, 0 no, -1 with a message (regions
+ * overlap). */
+static int fluid_node(const struct case_def *c, int k, const double *x, char *err, size_t len) {
+  if (!shape_contains(&c->fluids[k].shape, c->dimension, x) || walls_solid_at(c, NULL, x, NULL) >= 0) return 0;
+  if (wall_distance(c, x) < 0.5 * c->dx * (1 - BOUNDARY_TOL)) return 0;
+  int j = earlier_region(c, k, x);
+  if (j < 0) return 1;
+  snprintf(err, len, "%s: fluids.%d overlaps fluids.%d (both contain the point (%g, %g%s)); "
+           "fluid regions must not overlap", c->source_file, k, j, x[0], x[1],
+           c->dimension == 3 ? ", ..." : "");
+  return -1;
+}
+
+/* Whether node x of wall w is a ghost: 1 yes, 0 no, -1 with a message (outside the domain). */
+static int wall_node(const struct case_def *c, const struct init_rows *r, int w, const double *x,
+                     char *err, size_t len) {
+  if (!ghost_of(c, w, r->thickness, x) || walls_solid_at(c, NULL, x, NULL) < 0) return 0;
+  if (earlier_wall(c, w, r->thickness, x) >= 0) return 0;
+  if (inside_domain(c, x)) return 1;
+  snprintf(err, len, "%s: walls.%d: its %d ghost layers (%g m thick) reach (%g, %g%s) outside "
+           "the domain: the domain must extend at least %g m beyond the wall", c->source_file, w,
+           r->src[c->n_fluids + w].layers, r->thickness, x[0], x[1], c->dimension == 3 ? ", ..." : "",
+           r->thickness);
+  return -1;
+}
+
+/* Visit the particles of row `row` among its nodes [0, ix_end): fn(ctx, x, source, ordinal in
+ * the row) for each. Returns the particles, or -1 with a message. */
+static long visit_row(const struct case_def *c, const struct init_rows *r, long row, long ix_end,
+                      init_node_fn fn, void *ctx, char *err, size_t len) {
+  int k = init_row_source(r, row), dim = c->dimension;
+  const struct init_source *s = &r->src[k];
+  long q = row - s->first_row, iy = q % s->n[1], iz = q / s->n[1], count = 0;
+  double x[3];
+  for (long ix = next_candidate(s, dim, 0, iy, iz); ix < ix_end; ix = next_candidate(s, dim, ix + 1, iy, iz)) {
+    node_at(s, dim, ix, iy, iz, x);
+    int ok = s->wall < 0 ? fluid_node(c, k, x, err, len) : wall_node(c, r, s->wall, x, err, len);
+    if (ok < 0) return -1;
+    if (!ok) continue;
+    if (fn) fn(ctx, x, k, count);
+    count++;
+  }
+  return count;
+}
+
+long init_count_rows(const struct case_def *c, const struct init_rows *r, long first, long end,
+                     int *counts, init_node_fn fn, void *ctx, char *err, size_t len) {
+  for (long row = first; row < end; row++) {
+    const struct init_source *s = &r->src[init_row_source(r, row)];
+    long n = visit_row(c, r, row, s->n[0], fn, ctx, err, len);
+    if (n < 0) return row;
+    counts[row - first] = (int)n;
+  }
+  return -1;
+}
+
+long init_visit_row(const struct case_def *c, const struct init_rows *r, long row, long ix_end,
+                    init_node_fn fn, void *ctx) {
+  char err[8];
+  return visit_row(c, r, row, ix_end, fn, ctx, err, sizeof err);
+}
+
+/* The first of the n increasing coordinates a[] that is at least v (n if none). */
+static long lower_bound(const double *a, long n, double v) {
+  long lo = 0, hi = n;
+  while (lo < hi) {
+    long mid = lo + (hi - lo) / 2;
+    if (a[mid] < v) lo = mid + 1;
+    else hi = mid;
+  }
+  return lo;
+}
+
+/* Index range [*lo, *hi] along axis d of source s of the nodes within [a, b]; empty when *lo > *hi. */
+static void axis_range(const struct init_source *s, int d, double a, double b, long *lo, long *hi) {
+  if (!s->tank) {
+    double base = lattice_coord(&s->l, d, 0);
+    *lo = (long)fmax(0.0, ceil((a - base) / s->l.dx));
+    *hi = (long)fmin((double)(s->n[d] - 1), floor((b - base) / s->l.dx));
     return;
   }
-  long idx[3] = {k % wn->n[0], (k / wn->n[0]) % wn->n[1], k / (wn->n[0] * wn->n[1])};
-  for (int d = 0; d < wn->dim; d++) x[d] = wn->axis[d][idx[d]];
+  *lo = lower_bound(s->axis[d], s->n[d], a);
+  *hi = lower_bound(s->axis[d], s->n[d], nextafter(b, INFINITY)) - 1;
 }
 
-static void wall_nodes_close(struct wall_nodes *wn) {
-  for (int d = 0; d < 3; d++) free(wn->axis[d]);
-}
-
-static int fill_walls(const struct case_def *c, double thickness, int rank, int n_ranks,
-                      struct parts *p, struct init_counts *n, int64_t *ordinal, char *err,
-                      size_t err_len) {
-  int dim = c->dimension, status = 0;
-  for (int w = 0; w < c->n_walls && !status; w++) {
-    struct wall_nodes wn;
-    double x[3] = {0, 0, 0};
-    wall_nodes_open(&wn, c, w, thickness);
-    for (long k = wall_nodes_skip(&wn, 0); k < wn.count && !status; k = wall_nodes_skip(&wn, k + 1)) {
-      wall_nodes_get(&wn, k, x);
-      if (!ghost_of(c, w, thickness, x) || walls_solid_at(c, NULL, x, NULL) < 0) continue;
-      if (earlier_wall(c, w, thickness, x) >= 0) continue;
-      if (!inside_domain(c, x)) {
-        snprintf(err, err_len, "%s: walls.%d: its %d ghost layers (%g m thick) reach (%g, %g%s) outside "
-                 "the domain: the domain must extend at least %g m beyond the wall", c->source_file, w,
-                 wn.layers, thickness, x[0], x[1], dim == 3 ? ", ..." : "", thickness);
-        status = 1;
-        break;
-      }
-      if (p && *ordinal % n_ranks == rank) add_ghost(c, w, x, *ordinal, p);
-      (*ordinal)++;
-      n->n_wall++;
-    }
-    wall_nodes_close(&wn);
+int init_rows_in_box(const struct init_rows *r, int k, int dim, const double *lo, const double *hi,
+                     long *first, long *last) {
+  const struct init_source *s = &r->src[k];
+  for (int d = 0; d < 3; d++) {
+    first[d] = last[d] = 0;
+    if (d < dim) axis_range(s, d, lo[d], hi[d], &first[d], &last[d]);
+    if (first[d] > last[d]) return 0;
   }
-  return status;
+  return 1;
+}
+
+/* Context of init_particles: the particles and the counts it fills, the next id. */
+struct fill {
+  const struct case_def *c;
+  struct parts *p;
+  struct init_counts *n;
+  int64_t id;
+};
+
+/* Add (with parts) and count the particle at x of source k. */
+static void fill_node(void *ctx, const double *x, int k, long ordinal) {
+  (void)ordinal;
+  struct fill *f = ctx;
+  const struct case_def *c = f->c;
+  if (k < c->n_fluids) {
+    if (f->p) init_add_fluid(c, k, x, f->id, f->p);
+    f->n->fluid[c->fluids[k].phase]++;
+    f->n->n_fluid++;
+  } else {
+    if (f->p) init_add_ghost(c, k - c->n_fluids, x, f->id, f->p);
+    f->n->n_wall++;
+  }
+  f->id++;
+}
+
+int init_no_fluid(const struct case_def *c, long n_fluid, char *err, size_t err_len) {
+  if (n_fluid > 0) return 0;
+  snprintf(err, err_len, "%s: fluids: no fluid particle was generated (regions empty, or all "
+           "outside the walls)", c->source_file);
+  return 1;
 }
 
 /* Nodes of a lattice of spacing dx covering the bounding box of s grown by margin (a bound). */
@@ -346,18 +433,16 @@ double init_visit_count(const struct case_def *c, double support) {
   return isnan(total) ? INFINITY : total;
 }
 
-int init_particles(const struct case_def *c, double support, int rank, int n_ranks,
-                   struct parts *p, struct init_counts *counts, char *err, size_t err_len) {
+int init_particles(const struct case_def *c, double support, struct parts *p,
+                   struct init_counts *counts, char *err, size_t err_len) {
   memset(counts, 0, sizeof(*counts));
-  int64_t ordinal = 0;
-  double thickness = init_wall_layers(c, support) * c->dx;
   if (p) p->n_owned = p->n_halo = 0;
-  if (fill_fluids(c, rank, n_ranks, p, counts, &ordinal, err, err_len)) return 1;
-  if (fill_walls(c, thickness, rank, n_ranks, p, counts, &ordinal, err, err_len)) return 1;
-  if (counts->n_fluid == 0) {
-    snprintf(err, err_len, "%s: fluids: no fluid particle was generated (regions empty, or all "
-             "outside the walls)", c->source_file);
-    return 1;
-  }
-  return 0;
+  struct init_rows r;
+  init_rows_open(&r, c, support);
+  struct fill f = {c, p, counts, 0};
+  int status = 0;
+  for (long row = 0; row < r.n_rows && !status; row++)
+    status = visit_row(c, &r, row, r.src[init_row_source(&r, row)].n[0], fill_node, &f, err, err_len) < 0;
+  init_rows_close(&r);
+  return status || init_no_fluid(c, counts->n_fluid, err, err_len);
 }

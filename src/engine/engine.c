@@ -27,14 +27,10 @@ static void report(const struct engine *e, const char *msg) {
   if (e->rank == 0) fprintf(stderr, "mpsph: %s\n", msg);
 }
 
-/* Work units of a particle: a fluid particle's pair passes cost about four times a ghost's
- * interpolation. */
-static int particle_work(int phase) { return phase == PHASE_WALL ? 2 : 8; }
-
 /* Work units of this rank's owned particles. */
 static double rank_work(const struct engine *e) {
   double work = 0;
-  for (long i = 0; i < e->p.n_owned; i++) work += particle_work(e->p.phase[i]);
+  for (long i = 0; i < e->p.n_owned; i++) work += engine_particle_work(e->p.phase[i]);
   return work;
 }
 
@@ -53,7 +49,7 @@ static int64_t *top_cell_weights(const struct engine *e) {
   long n = e->space.top.n_cells;
   int64_t *w = mem_calloc(n, sizeof(int64_t), "top cell weights");
   double factor = cost_factor(e);
-  for (long i = 0; i < e->p.n_owned; i++) w[space_top_of(&e->space, e->p.cell[i])] += particle_work(e->p.phase[i]);
+  for (long i = 0; i < e->p.n_owned; i++) w[space_top_of(&e->space, e->p.cell[i])] += engine_particle_work(e->p.phase[i]);
   for (long c = 0; c < n; c++) w[c] = (int64_t)llround((double)w[c] * factor);
   if (e->rank == 0) {
     MPI_Reduce(MPI_IN_PLACE, w, (int)n, MPI_INT64_T, MPI_SUM, 0, e->comm);
@@ -74,19 +70,21 @@ static void resort(struct engine *e) {
   engine_work_reserve(e);
 }
 
-int engine_repartition(struct engine *e) {
+int engine_adopt_partition(struct engine *e, const int64_t *weight) {
   char err[512];
-  int64_t *w = top_cell_weights(e);
   int *owner = mem_calloc(e->space.top.n_cells, sizeof(int), "top cell owners");
-  int status = partition_cells(&e->space.top, w, e->n_ranks, e->comm, owner, err, sizeof(err));
-  free(w);
-  if (status) {
-    report(e, err);
-    free(owner);
-    return 1;
-  }
-  space_set_owner(&e->space, owner);
+  int status = partition_cells(&e->space.top, weight, e->n_ranks, e->comm, owner, err, sizeof(err));
+  if (status) report(e, err);
+  else space_set_owner(&e->space, owner);
   free(owner);
+  return status;
+}
+
+int engine_repartition(struct engine *e) {
+  int64_t *w = top_cell_weights(e);
+  int status = engine_adopt_partition(e, w);
+  free(w);
+  if (status) return 1;
   redistribute_parts(&e->space, &e->p, e->comm);
   halo_build(&e->halo, &e->space, e->comm);
   resort(e);
@@ -165,6 +163,17 @@ static int lock_output(struct engine *e) {
   return status;
 }
 
+int engine_halo_layers(const struct case_def *c, const struct grid *g, double support) {
+  double edge = g->edge[0];
+  for (int d = 1; d < c->dimension; d++) edge = fmin(edge, g->edge[d]);
+  double thickness = init_wall_layers(c, support) * c->dx;
+  return c->n_walls ? 1 + (int)ceil(2 * thickness / edge) : 1;
+}
+
+int engine_cell_grid(const struct case_def *c, double support, struct grid *g) {
+  return grid_init(g, c->dimension, c->domain_min, c->domain_max, support * ENGINE_CELL_SKIN);
+}
+
 /* Kernel, grid, halo depth. Returns 0 or 1. */
 static int setup_space(struct engine *e) {
   const struct case_def *c = e->c;
@@ -172,33 +181,19 @@ static int setup_space(struct engine *e) {
   e->vol0 = c->dimension == 2 ? c->dx * c->dx : c->dx * c->dx * c->dx;
   kernel_init(&e->kern, c->kernel, c->dimension, e->h);
   struct grid g;
-  if (grid_init(&g, c->dimension, c->domain_min, c->domain_max, e->kern.support * ENGINE_CELL_SKIN)) {
+  if (engine_cell_grid(c, e->kern.support, &g)) {
     report(e, "the domain has too many cells for this resolution (more than 2^31)");
     return 1;
   }
-  double edge = g.edge[0];
-  for (int d = 1; d < c->dimension; d++) edge = fmin(edge, g.edge[d]);
-  double thickness = init_wall_layers(c, e->kern.support) * c->dx;
-  int layers = c->n_walls ? 1 + (int)ceil(2 * thickness / edge) : 1;
+  int layers = engine_halo_layers(c, &g, e->kern.support);
   space_init(&e->space, &g, e->rank, e->n_ranks, layers, SPACE_TOP_CELLS_PER_RANK);
   e->c_max = 0;
   for (int ph = 0; ph < c->n_phases; ph++) e->c_max = fmax(e->c_max, c->phases[ph].c0);
   return 0;
 }
 
-/* Generate this rank's share of the initial particles. Returns 0 or 1. */
-static int generate_particles(struct engine *e) {
-  char err[1024];
-  struct init_counts counts;
-  parts_init(&e->p, e->c->dimension, 1024, e->c->n_walls > 0);
-  if (init_particles(e->c, e->kern.support, e->rank, e->n_ranks, &e->p, &counts, err, sizeof(err))) {
-    report(e, err);
-    return 1;
-  }
-  return 0;
-}
-
-/* Locate the particles in their cells and partition the cells among the ranks. Returns 0 or 1. */
+/* After a restart: locate the particles read from the checkpoint in their cells, partition the
+ * cells among the ranks and send the particles to their owners. Returns 0 or 1. */
 static int distribute_particles(struct engine *e) {
   long outside = space_assign_cells(&e->space, &e->p, 0, e->p.n_owned);
   int any = outside >= 0;
@@ -230,10 +225,14 @@ int engine_init(struct engine *e, const struct case_def *c, const char *outdir,
   e->last_snapshot_step = e->last_stats_step = e->last_probes_step = -1;
   e->next_checkpoint = c->checkpoint_interval;
   if (setup_space(e)) return 1;
-  int status = restart ? engine_checkpoint_read(e, restart) : generate_particles(e);
+  int status = restart ? engine_checkpoint_read(e, restart) : engine_generate(e);
   if (status) return status;
   engine_assemble(e);
-  if (distribute_particles(e)) return 1;
+  if (restart && distribute_particles(e)) return 1;
+  if (!restart) {
+    halo_build(&e->halo, &e->space, e->comm);
+    resort(e);
+  }
   e->n_repartitions = 0;
   engine_print_pipeline(e);
   /* not before: bad input found in the set-up creates no folder */

@@ -15,9 +15,7 @@ static long top_cells_for(const struct grid *g, long b) {
   return n;
 }
 
-/* The block edge [fine cells] of the top grid: the largest leaving per_rank top cells per rank,
- * then grown until the top grid has at most SPACE_TOP_CELLS_MAX cells. */
-static long top_block(const struct grid *g, int n_ranks, long per_rank) {
+long space_top_block(const struct grid *g, int n_ranks, long per_rank) {
   long longest = 1, b = 1;
   for (int d = 0; d < g->dim; d++)
     if (g->n[d] > longest) longest = g->n[d];
@@ -26,8 +24,7 @@ static long top_block(const struct grid *g, int n_ranks, long per_rank) {
   return b;
 }
 
-/* The top grid over fine grid g with blocks of b fine cells per axis. */
-static struct grid top_grid(const struct grid *g, long b) {
+struct grid space_top_grid(const struct grid *g, long b) {
   struct grid t = *g;
   t.n_cells = 1;
   for (int d = 0; d < g->dim; d++) {
@@ -43,8 +40,8 @@ void space_init(struct space *s, const struct grid *g, int rank, int n_ranks, in
                 long top_cells_per_rank) {
   memset(s, 0, sizeof(*s));
   s->grid = *g;
-  s->block = top_block(g, n_ranks, top_cells_per_rank);
-  s->top = top_grid(g, s->block);
+  s->block = space_top_block(g, n_ranks, top_cells_per_rank);
+  s->top = space_top_grid(g, s->block);
   s->cells_per_top = 1;
   for (int d = 0; d < g->dim; d++) s->cells_per_top *= s->block;
   s->rank = rank;

@@ -57,7 +57,7 @@ static void count(const struct case_def *c) {
   char err[ERR_LEN];
   kernel_init(&k, c->kernel, c->dimension, c->h_over_dx * c->dx);
   if (init_visit_count(c, k.support) <= MAX_VISITS)
-    init_particles(c, k.support, 0, 1, NULL, &n, err, sizeof err);
+    init_particles(c, k.support, NULL, &n, err, sizeof err);
 }
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
