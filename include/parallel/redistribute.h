@@ -1,5 +1,5 @@
 /* redistribute.h — move every owned particle to the owner of its cell (after a re-partition or
- * the initial generation), with one all-to-all exchange. */
+ * the reading of a checkpoint), with one all-to-all exchange counted in particles. */
 #ifndef MPSPH_REDISTRIBUTE_H
 #define MPSPH_REDISTRIBUTE_H
 
@@ -7,7 +7,7 @@
 #include "base/parts.h"
 #include "parallel/space.h"
 
-/** Send each owned particle [0, n_owned) to s->owner[cell]; on return the owned set is exactly
+/** Send each owned particle [0, n_owned) to the owner of its cell; on return the owned set is exactly
  *  the particles of this rank's cells (unsorted) and n_halo = 0. Cells must be assigned. */
 void redistribute_parts(const struct space *s, struct parts *p, MPI_Comm comm);
 

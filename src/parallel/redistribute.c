@@ -1,4 +1,5 @@
-/* redistribute.c — all-to-all redistribution of particles to the owners of their cells. */
+/* redistribute.c — all-to-all redistribution of particles to the owners of their cells (after a
+ * re-partition or a restart; the start-up generates particles where they belong). */
 #include <stdlib.h>
 #include "parallel/proxy.h"
 #include "parallel/redistribute.h"
@@ -23,19 +24,19 @@ void redistribute_parts(const struct space *s, struct parts *p, MPI_Comm comm) {
   long *order = group_by_owner(s, p, send_count);
   MPI_Alltoall(send_count, 1, MPI_INT, recv_count, 1, MPI_INT, comm);
   long n_recv = 0;
-  for (int r = 0; r < nr; r++) {
-    sdispl[r] = (r ? sdispl[r - 1] + send_count[r - 1] * w : 0);
-    rdispl[r] = (r ? rdispl[r - 1] + recv_count[r - 1] * w : 0);
+  for (int r = 0; r < nr; r++) {   /* in particles: slots fit an int, their doubles may not */
+    sdispl[r] = (r ? sdispl[r - 1] + send_count[r - 1] : 0);
+    rdispl[r] = (r ? rdispl[r - 1] + recv_count[r - 1] : 0);
     n_recv += recv_count[r];
   }
   double *sbuf = mem_calloc((size_t)p->n_owned * w + 1, sizeof(double), "migration send buffer");
   double *rbuf = mem_calloc((size_t)n_recv * w + 1, sizeof(double), "migration receive buffer");
   parts_pack(p, PART_MIGRATE, order, p->n_owned, sbuf);
-  for (int r = 0; r < nr; r++) {
-    send_count[r] *= w;
-    recv_count[r] *= w;
-  }
-  MPI_Alltoallv(sbuf, send_count, sdispl, MPI_DOUBLE, rbuf, recv_count, rdispl, MPI_DOUBLE, comm);
+  MPI_Datatype particle;   /* one packed particle: w doubles */
+  MPI_Type_contiguous(w, MPI_DOUBLE, &particle);
+  MPI_Type_commit(&particle);
+  MPI_Alltoallv(sbuf, send_count, sdispl, particle, rbuf, recv_count, rdispl, particle, comm);
+  MPI_Type_free(&particle);
   parts_reserve(p, n_recv);
   parts_unpack(p, PART_MIGRATE, 0, n_recv, rbuf);
   p->n_owned = n_recv;
