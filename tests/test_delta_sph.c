@@ -70,7 +70,7 @@ static void evaluate(struct engine *e, int k) {
  * relative |drho| there, over all ranks. */
 static void worst(const struct engine *e, int linear, int bulk_only, double *rho_err, double *drho_err) {
   const struct parts *p = &e->p;
-  double out[2] = {0, 0}, support = e->kern.support;
+  double out[2] = {0, 0}, support = e->prm.kern.support;
   for (long i = 0; i < p->n_owned; i++) {
     if (p->phase[i] == PHASE_WALL) continue;
     double x = p->x[0][i], y = p->x[1][i], lo = p->phase[i] == 0 ? 0.0 : 0.5;
@@ -109,7 +109,7 @@ int main(int argc, char **argv) {
   static struct case_def c;
   struct engine e;
   if (engine_test_start(dir, case_text, &c, &e)) return check_report("test_delta_sph");
-  CHECK(e.features & FEAT_SHEPARD && !(e.features & (FEAT_SHIFT | FEAT_TIC | FEAT_DAMPER)),
+  CHECK(e.prm.features & FEAT_SHEPARD && !(e.prm.features & (FEAT_SHIFT | FEAT_TIC | FEAT_DAMPER)),
         "delta-sph pipeline: Shepard density, no shifting, tensile control or damper");
   double rho_err, drho_err;
   evaluate(&e, 1);   /* first: the lattice is still unperturbed */

@@ -80,7 +80,7 @@ static void evaluate(struct engine *e, enum field k) {
  * of the box's sides, on all ranks [1/s]. */
 static double worst_rate(const struct engine *e, int edge_only) {
   const struct parts *p = &e->p;
-  double worst = 0, s = e->kern.support;
+  double worst = 0, s = e->prm.kern.support;
   for (long i = 0; i < p->n_owned; i++) {
     double x = p->x[0][i], y = p->x[1][i];
     if (edge_only && fmin(fmin(x, 1 - x), fmin(y, 1 - y)) > s) continue;
@@ -172,7 +172,7 @@ int main(int argc, char **argv) {
   static struct case_def c;
   struct engine e;
   if (engine_test_start(dir, case_text, &c, &e)) return check_report("test_generalized_dissipation");
-  CHECK(e.features & FEAT_GENERALIZED_DISSIPATION && !(e.features & (FEAT_SHIFT | FEAT_TIC | FEAT_DAMPER)),
+  CHECK(e.prm.features & FEAT_GENERALIZED_DISSIPATION && !(e.prm.features & (FEAT_SHIFT | FEAT_TIC | FEAT_DAMPER)),
         "generalized-dissipation pipeline: no shifting, tensile control or damper");
   CHECK(c.delta == 0.5 && c.cfl == 0.25 && c.h_over_dx == 1.1, "scheme defaults delta 0.5, cfl 0.25, h 1.1 dx");
   check_linear(&e, &c);   /* first two: on the lattice, not yet perturbed */

@@ -49,7 +49,7 @@ static const char *case_text =
  * interface y = 0.5 (band <= 0: all interior particles), over all ranks. */
 static double max_acceleration(const struct engine *e, int ph, double band) {
   const struct parts *p = &e->p;
-  double support = e->kern.support, worst = 0;
+  double support = e->prm.kern.support, worst = 0;
   for (long i = 0; i < p->n_owned; i++) {
     double x = p->x[0][i], y = p->x[1][i];
     if (p->phase[i] == PHASE_WALL || (ph >= 0 && p->phase[i] != ph)) continue;

@@ -41,7 +41,7 @@ static const char *case_text =
  * (near = 1) or beyond (near = 0) one support of the interface y = 0.5, over all ranks. */
 static double max_acceleration(const struct engine *e, int near) {
   const struct parts *p = &e->p;
-  double support = e->kern.support, worst = 0;
+  double support = e->prm.kern.support, worst = 0;
   for (long i = 0; i < p->n_owned; i++) {
     double x = p->x[0][i], y = p->x[1][i];
     if (p->phase[i] == PHASE_WALL || fmin(x, 1 - x) < support || fmin(y, 1 - y) < support) continue;

@@ -114,12 +114,12 @@ static void set_fields(struct engine *e, int k) {
   for (long i = 0; i < p->n_owned; i++) {
     if (p->phase[i] == PHASE_WALL) continue;
     const struct phase *f = &e->c->phases[p->phase[i]];
-    p->m[i] = f->rho0 * e->vol0;
+    p->m[i] = f->rho0 * e->prm.vol0;
     p->rho[i] = k == 2 ? f->rho0 * (1 + 0.01 * engine_test_noise(p->id[i], 5)) : f->rho0;
     p->p[i] = eos_pressure(f, p->rho[i]);
     for (int d = 0; d < 2; d++) p->v[d][i] = k == 1 ? 0.3 * p->x[d][i] : k == 2 ? engine_test_noise(p->id[i], 10 + d) : 0;
     if (k == 1) {
-      p->m[i] = 1000 * e->vol0;
+      p->m[i] = 1000 * e->prm.vol0;
       p->rho[i] = 1000;
       p->p[i] = 500 + 700 * p->x[0][i] - 300 * p->x[1][i];
     }
@@ -144,7 +144,7 @@ static void set_and_rebuild(struct engine *e, int k) {
 
 /* 1 if owned particle i's kernel support lies inside the box [0,1]^2. */
 static int support_inside(const struct engine *e, long i) {
-  double x = e->p.x[0][i], y = e->p.x[1][i], s = e->kern.support;
+  double x = e->p.x[0][i], y = e->p.x[1][i], s = e->prm.kern.support;
   return fmin(fmin(x, 1 - x), fmin(y, 1 - y)) > s;
 }
 
@@ -154,13 +154,13 @@ static double expected_reinit(const struct engine *e, long i, double rho_star) {
   const struct parts *p = &e->p;
   const int ph = p->phase[i], light = riemann_light_phase(e->c, ph);
   const double rho0 = e->c->phases[ph].rho0;
-  double sum = kernel_w(&e->kern, 0.0);
+  double sum = kernel_w(&e->prm.kern, 0.0);
   for (long j = 0; j < p->n_owned + p->n_halo; j++) {
     if (j == i || (!light && p->phase[j] != PHASE_WALL && p->phase[j] != ph)) continue;
     double dx[3], r2 = pair_separation(p, 2, i, j, dx);
-    if (r2 < e->kern.support2) sum += kernel_w(&e->kern, r2);
+    if (r2 < e->prm.kern.support2) sum += kernel_w(&e->prm.kern, r2);
   }
-  double rho_sum = rho0 * sum / e->lattice_w_sum;
+  double rho_sum = rho0 * sum / e->prm.lattice_w_sum;
   return light ? rho_sum : rho_sum + fmax(0.0, rho_star - rho_sum) * rho0 / rho_star;
 }
 
@@ -170,7 +170,7 @@ static int support_of_own_phase(const struct engine *e, long i) {
   for (long j = 0; j < p->n_owned + p->n_halo; j++) {
     double dx[3];
     if (p->phase[j] != PHASE_WALL && p->phase[j] != p->phase[i] &&
-        pair_separation(p, 2, i, j, dx) < e->kern.support2)
+        pair_separation(p, 2, i, j, dx) < e->prm.kern.support2)
       return 0;
   }
   return 1;
@@ -231,8 +231,8 @@ static void plain_terms(const struct engine *e, long i, double *acc, double *drh
   acc[0] = acc[1] = *drho = scale[0] = scale[1] = 0;
   for (long j = 0; j < p->n_owned + p->n_halo; j++) {
     double dx[3], r2 = pair_separation(p, 2, i, j, dx);
-    if (j == i || r2 >= e->kern.support2 || p->phase[j] == PHASE_WALL) continue;
-    double fv = kernel_f(&e->kern, r2) * p->m[j] / p->rho[j], vdx = 0;
+    if (j == i || r2 >= e->prm.kern.support2 || p->phase[j] == PHASE_WALL) continue;
+    double fv = kernel_f(&e->prm.kern, r2) * p->m[j] / p->rho[j], vdx = 0;
     for (int d = 0; d < 2; d++) {
       acc[d] -= (p->p[i] + p->p[j]) * fv * dx[d] / p->rho[i];
       scale[0] += fabs((p->p[i] + p->p[j]) * fv * dx[d] / p->rho[i]);
@@ -280,7 +280,7 @@ static void check_walls(struct engine *e) {
   set_and_rebuild(e, 0);
   run_pass(e, "Riemann momentum");
   run_pass(e, "Riemann continuity");
-  double worst[2] = {0, 0}, scale = 2 * 5000 / 1000.0 / e->h;   /* 2 p / (rho h) */
+  double worst[2] = {0, 0}, scale = 2 * 5000 / 1000.0 / e->prm.h;   /* 2 p / (rho h) */
   for (long i = 0; i < e->p.n_owned; i++) {
     if (e->p.phase[i] == PHASE_WALL) continue;
     worst[0] = fmax(worst[0], hypot(e->w.dv[0][i], e->w.dv[1][i]) / scale);
@@ -303,7 +303,7 @@ static void uniform_flow(struct engine *e, double u) {
 }
 
 static void check_stepper(struct engine *e) {
-  double h = e->h, b = 0.75 * engine_shift_max(e), u_ref = e->c->u_max;
+  double h = e->prm.h, b = 0.75 * engine_shift_max(e), u_ref = e->c->u_max;
   uniform_flow(e, 0.1 * u_ref);
   CHECK_CLOSE(dual_advection_dt(e, 0.0), 0.25 * h / u_ref, 1e-15, "dt_ad, U << u_max");
   double u = 10 * u_ref, a = 500;
@@ -341,7 +341,7 @@ int main(int argc, char **argv) {
   static struct case_def c, c1, c2, c3;
   struct engine e, e1, e2, e3;
   if (engine_test_start(dir, two_phase_case, &c, &e)) return check_report("test_riemann");
-  CHECK((e.features & FEAT_RIEMANN) && (e.features & FEAT_TRANSPORT_VELOCITY) && !(e.features & (FEAT_SHIFT | FEAT_DAMPER | FEAT_TIC)),
+  CHECK((e.prm.features & FEAT_RIEMANN) && (e.prm.features & FEAT_TRANSPORT_VELOCITY) && !(e.prm.features & (FEAT_SHIFT | FEAT_DAMPER | FEAT_TIC)),
         "riemann pipeline: its own terms only, transport velocity with a light phase");
   check_reinit(&e);
   check_equal_states(&e);
@@ -353,12 +353,12 @@ int main(int argc, char **argv) {
   engine_close_output(&e2);
   engine_free(&e2);
   if (engine_test_start(dir3, liquids_case, &c3, &e3)) return check_report("test_riemann");
-  CHECK(!(e3.features & FEAT_TRANSPORT_VELOCITY), "two liquids: no light phase, no transport velocity");
+  CHECK(!(e3.prm.features & FEAT_TRANSPORT_VELOCITY), "two liquids: no light phase, no transport velocity");
   check_liquid_reinit(&e3);
   engine_close_output(&e3);
   engine_free(&e3);
   if (engine_test_start(dir1, one_phase_case, &c1, &e1)) return check_report("test_riemann");
-  CHECK(!(e1.features & FEAT_TRANSPORT_VELOCITY), "one phase: no transport velocity");
+  CHECK(!(e1.prm.features & FEAT_TRANSPORT_VELOCITY), "one phase: no transport velocity");
   check_stepper(&e1);
   if (rank == 0) {
     char cmd[900];

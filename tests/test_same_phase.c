@@ -104,7 +104,7 @@ static double lattice_moment(const struct engine *e) {
   for (int a = -8; a <= 8; a++)
     for (int b = -8; b <= 8; b++) {
       double r2 = (a * a + b * b) * dx * dx;
-      if (r2 > 0 && r2 < e->kern.support2) sum += b * dx * b * dx * -kernel_f(&e->kern, r2) * dx * dx;
+      if (r2 > 0 && r2 < e->prm.kern.support2) sum += b * dx * b * dx * -kernel_f(&e->prm.kern, r2) * dx * dx;
     }
   return sum;
 }
@@ -120,7 +120,7 @@ static void check_continuity(const struct engine *e, const double *ref, double *
   for (long i = 0; i < p->n_owned; i++) {
     if (p->phase[i] == PHASE_WALL) continue;
     if (ref && memcmp(&ref[i], &e->w.drho[i], sizeof(double))) n++;
-    if (fmin(edge_distance(p, i), fabs(p->x[1][i] - 0.5)) < 1.1 * e->kern.support) continue;
+    if (fmin(edge_distance(p, i), fabs(p->x[1][i] - 0.5)) < 1.1 * e->prm.kern.support) continue;
     out = fmax(out, fabs(e->w.drho[i] + p->rho[i] * b_strain * moment) / (p->rho[i] * b_strain));
   }
   MPI_Allreduce(&out, err, 1, MPI_DOUBLE, MPI_MAX, e->comm);
@@ -140,7 +140,7 @@ static void check_pressure_field(const struct engine *e, int linear, double insi
     double exact = p_b + (linear ? slope[0] * p->x[0][i] + slope[1] * p->x[1][i] : 0.0);
     out[0] = fmax(out[0], fabs(e->w.p_shepard[i] - exact) / p_b);
     out[1] = fmax(out[1], fabs(e->w.drho[i]) / e->c->phases[p->phase[i]].rho0);
-    n += fabs(p->x[1][i] - 0.5) < e->kern.support;
+    n += fabs(p->x[1][i] - 0.5) < e->prm.kern.support;
   }
   MPI_Allreduce(MPI_IN_PLACE, out, 2, MPI_DOUBLE, MPI_MAX, e->comm);
   MPI_Allreduce(&n, n_interface, 1, MPI_LONG, MPI_SUM, e->comm);
@@ -202,7 +202,7 @@ static void test_continuity(struct engine *e, int conventional) {
  * support above the interface and 1.1 supports from the box's sides (M: lattice_moment). */
 static double light_interface_error(const struct engine *e) {
   const struct parts *p = &e->p;
-  const double moment = lattice_moment(e), support = e->kern.support;
+  const double moment = lattice_moment(e), support = e->prm.kern.support;
   double out = 0;
   for (long i = 0; i < p->n_owned; i++) {
     double above = p->x[1][i] - 0.5, side = fmin(p->x[0][i], 1 - p->x[0][i]);
@@ -229,7 +229,7 @@ static void test_light_reads_heavier(struct engine *e) {
   long n[2] = {0, 0};   /* light rows near the interface changed, light rows beyond it changed */
   for (long i = 0; i < e->p.n_owned; i++)
     if (e->p.phase[i] == 1 && memcmp(&ref[i], &e->w.drho[i], sizeof(double)))
-      n[e->p.x[1][i] - 0.5 >= e->kern.support]++;
+      n[e->p.x[1][i] - 0.5 >= e->prm.kern.support]++;
   MPI_Allreduce(MPI_IN_PLACE, n, 2, MPI_LONG, MPI_SUM, e->comm);
   if (e->rank == 0)
     printf("random water velocities: light drho/dt changed near the interface %ld, beyond one support %ld\n", n[0], n[1]);
@@ -254,7 +254,7 @@ static void test_linear_pressure(struct engine *e) {
   double p_err, drho_err;
   long n_iface;
   evaluate(e, LINEAR_P);
-  check_pressure_field(e, 1, 2.2 * e->kern.support, &p_err, &drho_err, &n_iface);
+  check_pressure_field(e, 1, 2.2 * e->prm.kern.support, &p_err, &drho_err, &n_iface);
   if (e->rank == 0)
     printf("linear p, full supports (%ld near the interface): Shepard error %.3g p_b, |drho/dt| %.3g rho0\n",
            n_iface, p_err, drho_err);
@@ -297,7 +297,7 @@ static void test_step(struct engine *e) {
   double y0 = n0 ? e->p.x[1][0] : 0, v0 = n0 ? e->p.v[1][0] : 0;
   long id0 = n0 ? e->p.id[0] : -1;
   CHECK(engine_step(e) == 0, "step");
-  double dt_paper = e->c->cfl * e->h / e->c->phases[0].c0;
+  double dt_paper = e->c->cfl * e->prm.h / e->c->phases[0].c0;
   long pairs = e->ops[rhs].pairs - pairs0;
   long both[2] = {pairs, pairs_one};
   MPI_Allreduce(MPI_IN_PLACE, both, 2, MPI_LONG, MPI_SUM, e->comm);
@@ -368,8 +368,9 @@ static void test_wall_repulsion(struct engine *e) {
       for (long b = 0; b < p->n_owned + p->n_halo; b++) {
         if (p->phase[b] != PHASE_WALL || fabs(p->x[0][b] + 0.5 * dx) > 1e-9 || fabs(p->x[1][b] - p->x[1][i]) > 1e-9) continue;
         double acc[3] = {0, 0, 0}, r2 = dx * dx;
-        spc_wall_repulsion(e, i, b, acc);
-        double expect = k == 0 ? 30.0 * (u_x[0] - p->v[0][b]) * -1.0 * kernel_w(&e->kern, r2) * e->h * e->h / dx : 0.0;
+        struct pass_ctx ctx = engine_pass_ctx(e);
+        spc_wall_repulsion(&ctx, i, b, acc);
+        double expect = k == 0 ? 30.0 * (u_x[0] - p->v[0][b]) * -1.0 * kernel_w(&e->prm.kern, r2) * e->prm.h * e->prm.h / dx : 0.0;
         printf("wall repulsion, gas %s the wall: ghost u_x = %g, a = (%.6g, %.3g), Eq. 39 gives %.6g m/s^2\n",
                k == 0 ? "approaching" : "receding", p->v[0][b], acc[0], acc[1], expect);
         CHECK(fabs(p->v[0][b] + u_x[k]) <= 1e-12, "ghost velocity %.17g, want %g", p->v[0][b], -u_x[k]);
@@ -390,7 +391,7 @@ int main(int argc, char **argv) {
   static struct case_def c;
   struct engine e;
   if (engine_test_start(dir, case_text, &c, &e)) return check_report("test_same_phase");
-  CHECK((e.features & FEAT_SAME_PHASE_CONTINUITY) && !(e.features & (FEAT_SHIFT | FEAT_TIC | FEAT_DAMPER | FEAT_SHEPARD)),
+  CHECK((e.prm.features & FEAT_SAME_PHASE_CONTINUITY) && !(e.prm.features & (FEAT_SHIFT | FEAT_TIC | FEAT_DAMPER | FEAT_SHEPARD)),
         "same-phase-continuity pipeline: no shifting, tensile control, damper or Shepard density");
   CHECK(c.alpha == 0.05, "paper 003 default alpha_w = 0.05, got %g", c.alpha);
   test_continuity(&e, 0);   /* first: the lattice is still unperturbed */

@@ -92,11 +92,11 @@ static void evaluate_lattice(struct engine *e, struct case_def *c, enum lattice_
  * linear u differ from their exact values. */
 static double lattice_moment(const struct engine *e) {
   double dx = e->c->dx, b = 0;
-  int n = (int)(e->kern.support / dx) + 1;
+  int n = (int)(e->prm.kern.support / dx) + 1;
   for (int ix = -n; ix <= n; ix++)
     for (int iy = -n; iy <= n; iy++) {
       double r2 = (ix * ix + iy * iy) * dx * dx;
-      if (r2 > 0 && r2 < e->kern.support2) b -= kernel_f(&e->kern, r2) * ix * dx * ix * dx * dx * dx;
+      if (r2 > 0 && r2 < e->prm.kern.support2) b -= kernel_f(&e->prm.kern, r2) * ix * dx * ix * dx * dx * dx;
     }
   return b;
 }
@@ -131,9 +131,9 @@ static void check_uniform(struct engine *e, struct case_def *c) {
   long tested = 0;
   double worst = 0, u0 = hypot(U0[0], U0[1]);
   for (long i = 0; i < p->n_owned; i++) {
-    if (p->phase[i] == PHASE_WALL || depth_in_phase(p, i) < 2 * e->kern.support) continue;
-    worst = fmax(worst, fabs(e->w.drho[i]) * e->h / (p->rho[i] * u0));
-    for (int a = 0; a < 2; a++) worst = fmax(worst, fabs(e->w.dv[a][i]) * p->rho[i] * e->h / P_REF);
+    if (p->phase[i] == PHASE_WALL || depth_in_phase(p, i) < 2 * e->prm.kern.support) continue;
+    worst = fmax(worst, fabs(e->w.drho[i]) * e->prm.h / (p->rho[i] * u0));
+    for (int a = 0; a < 2; a++) worst = fmax(worst, fabs(e->w.dv[a][i]) * p->rho[i] * e->prm.h / P_REF);
     tested++;
   }
   check_worst(e, "uniform state: drho/dt = 0, du/dt = 0", tested, 400, worst);
@@ -148,11 +148,11 @@ static void check_hydrostatic(struct engine *e, struct case_def *c, double b) {
     long tested = 0;
     double worst = 0;
     for (long i = 0; i < p->n_owned; i++) {
-      if (p->phase[i] == PHASE_WALL || depth_in_phase(p, i) < e->kern.support) continue;
+      if (p->phase[i] == PHASE_WALL || depth_in_phase(p, i) < e->prm.kern.support) continue;
       double pressure_term = b * c->phases[p->phase[i]].rho0 / p->rho[i];
       for (int a = 0; a < 2; a++) {
         double want = (gravity - pressure_term) * G_TILT[a];
-        worst = fmax(worst, fabs(e->w.dv[a][i] - want) * p->rho[i] * e->h / P_REF);
+        worst = fmax(worst, fabs(e->w.dv[a][i] - want) * p->rho[i] * e->prm.h / P_REF);
       }
       tested++;
     }
@@ -170,8 +170,8 @@ static void check_divergence(struct engine *e, struct case_def *c, double b) {
   long tested = 0;
   double worst = 0, div = GRAD_U[0][0] + GRAD_U[1][1], u0 = hypot(U0[0], U0[1]);
   for (long i = 0; i < p->n_owned; i++) {
-    if (p->phase[i] == PHASE_WALL || depth_in_box(p, i) < 2 * e->kern.support) continue;
-    worst = fmax(worst, fabs(e->w.drho[i] + p->rho[i] * b * div) * e->h / (p->rho[i] * u0));
+    if (p->phase[i] == PHASE_WALL || depth_in_box(p, i) < 2 * e->prm.kern.support) continue;
+    worst = fmax(worst, fabs(e->w.drho[i] + p->rho[i] * b * div) * e->prm.h / (p->rho[i] * u0));
     tested++;
   }
   check_worst(e, "linear velocity: drho/dt = -rho b div u", tested, 1000, worst);
@@ -201,7 +201,7 @@ static void check_gradient(struct engine *e) {
   long tested = 0, bad = 0;
   double worst = 0;
   for (long i = 0; i < p->n_owned; i++) {
-    if (p->phase[i] == PHASE_WALL || depth_in_phase(p, i) < 1.5 * e->kern.support) continue;
+    if (p->phase[i] == PHASE_WALL || depth_in_phase(p, i) < 1.5 * e->prm.kern.support) continue;
     double rho0 = e->c->phases[p->phase[i]].rho0;
     for (int d = 0; d < 2; d++) {
       double err = fabs(e->w.grad_rho[d][i] - rho0 * slope[d]) / (rho0 * 0.02);
@@ -264,13 +264,13 @@ static void check_terms_off(struct engine *e, struct case_def *c) {
   engine_assemble(e);
   int gradient_op = 0;
   for (int k = 0; k < e->n_ops; k++) gradient_op |= strstr(e->ops[k].name, "density gradient") != NULL;
-  CHECK(!(e->features & (FEAT_DIFFUSION | FEAT_VISCOSITY)) && !gradient_op,
+  CHECK(!(e->prm.features & (FEAT_DIFFUSION | FEAT_VISCOSITY)) && !gradient_op,
         "delta = alpha = 0: diffusion, viscosity and the density gradient are out of the pipeline");
   double *buf = malloc(3 * sizeof(double) * (e->p.n_owned + 1));
   e->stage = 0;
   engine_evaluate(e, 0);
   rhs_values(e, buf, 1);
-  e->features |= FEAT_DIFFUSION | FEAT_VISCOSITY;   /* the full loops, with zero coefficients */
+  e->prm.features |= FEAT_DIFFUSION | FEAT_VISCOSITY;   /* the full loops, with zero coefficients */
   engine_evaluate(e, 0);
   long differ = rhs_values(e, buf, 0);
   MPI_Allreduce(MPI_IN_PLACE, &differ, 1, MPI_LONG, MPI_SUM, e->comm);

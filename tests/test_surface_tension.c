@@ -112,7 +112,7 @@ static void sum_particle(const struct engine *e, long i, struct st_sums *s) {
   s->net[1] += m * ay;
   s->scale += m * hypot(ax, ay);
   s->radial_force += m * (ax * x + ay * y) / r;
-  if (fabs(r - R_DROP) > e->kern.support + 0.3 * e->c->dx) s->far_force_max = fmax(s->far_force_max, hypot(ax, ay));
+  if (fabs(r - R_DROP) > e->prm.kern.support + 0.3 * e->c->dx) s->far_force_max = fmax(s->far_force_max, hypot(ax, ay));
   if (e->w.colour_grad[i] == 0) return;
   double exact = (p->phase[i] == 0 ? 1.0 : -1.0) / r;
   s->n_band++;
@@ -167,7 +167,7 @@ int main(int argc, char **argv) {
   static struct case_def c;
   struct engine e;
   if (engine_test_start(dir, case_text, &c, &e)) return check_report("test_surface_tension");
-  CHECK(e.features & FEAT_SURFACE_TENSION, "surface tension in the pipeline");
+  CHECK(e.prm.features & FEAT_SURFACE_TENSION, "surface tension in the pipeline");
   evaluate_at_rest(&e, 0.0);
   check_rings(&e);
   evaluate_at_rest(&e, 0.1);

@@ -1,8 +1,9 @@
-/* test_wall_guard.c — the wall guard (src/engine/wall_guard.c) on single particles placed by hand in a
+/* test_wall_guard.c — the wall guard (src/physics/wall_guard.c) on single particles placed by hand in a
  * tank [0, 1] x [0, 1] with dx = 0.05 and physics.wall_guard = 0.25 (a guard distance of
  * 0.0125 m):
- *  1. fixed tank, after a step (wall_guard_apply): a particle 0.2 dx above the floor moving down
- *     loses its normal velocity and keeps its tangential one; moving up, or 0.6 dx above the floor,
+ *  1. fixed tank, after a step (wall_guard_apply, through engine_wall_guard): a particle 0.2 dx
+ *     above the floor moving down loses its normal velocity and keeps its tangential one; moving
+ *     up, or 0.6 dx above the floor,
  *     it is untouched; inside the floor's solid it loses the velocity that carries it deeper; near
  *     the left wall the normal is x; the number of corrections is counted;
  *  2. fixed tank, per stage (pass_wall_guard): the acceleration into the floor is removed for a
@@ -20,7 +21,6 @@
 #include "engine/engine.h"
 #include "case/motion.h"
 #include "physics/passes.h"
-#include "engine/wall_guard.h"
 
 #define TOL 1e-14
 
@@ -72,9 +72,15 @@ static void place(struct engine *e, long i, double x, double y, double u, double
 
 /* After one wall_guard_apply with particle i alone placed: its velocity (u, v) and the count. */
 static void expect_after_step(struct engine *e, long i, double u, double v, long hits, const char *what) {
-  long n = wall_guard_apply(e);
+  long n = engine_wall_guard(e);
   CHECK(n == hits && fabs(e->p.v[0][i] - u) < TOL && fabs(e->p.v[1][i] - v) < TOL,
         "%s: v = (%g, %g), %ld corrections; want (%g, %g), %ld", what, e->p.v[0][i], e->p.v[1][i], n, u, v, hits);
+}
+
+/* pass_wall_guard on the engine's particles, as the stage pipeline runs it. */
+static void guard_stage(struct engine *e) {
+  struct pass_ctx ctx = engine_pass_ctx(e);
+  pass_wall_guard(&ctx);
 }
 
 /* Park every owned fluid particle in the middle of the tank at rest (away from the guard). */
@@ -101,19 +107,19 @@ static void fixed_tank(struct engine *e) {
   place(e, i, 0.5, 0.01, 0, 0);
   e->w.dv[0][i] = 2, e->w.dv[1][i] = -50;
   if (e->w.du[0]) e->w.du[0][i] = 0.1, e->w.du[1][i] = -0.2;
-  pass_wall_guard(e);
+  guard_stage(e);
   CHECK(e->w.dv[0][i] == 2 && e->w.dv[1][i] == 0, "at rest: dv/dt = (%g, %g), want (2, 0)", e->w.dv[0][i], e->w.dv[1][i]);
   CHECK(e->w.du[0] && e->w.du[0][i] == 0.1 && e->w.du[1][i] == 0, "shifting velocity not clipped");
   place(e, i, 0.5, 0.01, 0, 1);
   e->w.dv[1][i] = -50;
-  pass_wall_guard(e);
+  guard_stage(e);
   CHECK(e->w.dv[1][i] == -50, "moving away: dv/dt_y = %g, want -50 (kept)", e->w.dv[1][i]);
 }
 
 static void moving_tank(struct engine *e, const struct case_def *c) {
   long i = first_fluid(e);
   double floor_speed = 0.1 * 2 * acos(-1.0);   /* A omega cos(0) */
-  motion_frame(&c->walls[0].motion, 0.0, &e->frames[0]);
+  motion_frame(&c->walls[0].motion, 0.0, &e->prm.frames[0]);
   park_all(e);
   place(e, i, 0.5, 0.01, 0, 0.3);
   expect_after_step(e, i, 0, floor_speed, 1, "moving floor overtaking the particle");
@@ -121,7 +127,7 @@ static void moving_tank(struct engine *e, const struct case_def *c) {
   expect_after_step(e, i, 0, 1.0, 0, "particle faster than the moving floor");
   place(e, i, 0.5, 0.01, 0, floor_speed);
   e->w.dv[1][i] = -3;   /* the floor's acceleration at t = 0 is 0: -3 is into it */
-  pass_wall_guard(e);
+  guard_stage(e);
   CHECK(fabs(e->w.dv[1][i]) < TOL, "moving floor: dv/dt_y = %g, want 0", e->w.dv[1][i]);
 }
 

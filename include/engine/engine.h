@@ -5,9 +5,8 @@
 #include <mpi.h>
 #include <stdio.h>
 #include "case/case.h"
-#include "physics/interface.h"
 #include "io/io_hdf5.h"
-#include "physics/kernel.h"
+#include "physics/pass_ctx.h"
 #include "parallel/nlist.h"
 #include "base/parts.h"
 #include "parallel/proxy.h"
@@ -33,7 +32,7 @@ struct csv_table {
 /** One operation of the per-stage pipeline: a pass over particles/pairs, or a halo update. */
 struct stage_op {
   const char *name;
-  void (*pass)(struct engine *e);   /* NULL for a halo update */
+  pass_fn pass;                     /* NULL for a halo update */
   int halo_fields;                  /* for halo updates: a mask of HF_* fields */
   int once_per_step;                /* run at the first stage only */
   double seconds;                   /* accumulated wall time */
@@ -46,88 +45,31 @@ enum { HF_POS = 1, HF_VEL = 2, HF_RHO = 4, HF_P = 8, HF_MASS = 16, HF_GRAD_RHO =
        HF_P_SHEPARD = 2048,
        HF_GD = 4096 /* scheme generalized-dissipation: Shepard sum Gamma and <grad p>^L */ };
 
-/** Terms and passes a scene needs, decided once at start-up from the case. */
-enum {
-  FEAT_WALLS = 1,          /* wall ghost interpolation */
-  FEAT_SHIFT = 2,          /* particle shifting velocity du (advection with u + du) */
-  FEAT_DELTA_U = 4,        /* the delta-u terms of continuity and momentum (consistent shifting) */
-  FEAT_DAMPER = 8,         /* acoustic damper on the liquid phases */
-  FEAT_SURFACE = 16,       /* free-surface detection (region, normals) */
-  FEAT_TIC = 32,           /* tensile instability control */
-  FEAT_SHARPNESS = 64,     /* interface sharpness force */
-  FEAT_CENTRAL = 128,      /* quadratic potential body force */
-  FEAT_SURFACE_TENSION = 256,  /* CSF surface tension between the fluid phases */
-  FEAT_SHEPARD = 512,      /* scheme delta-sph: same-phase Shepard density and the pressure from it */
-  FEAT_SAME_PHASE_CONTINUITY = 1024,  /* scheme same-phase-continuity (paper 003): its own rhs pass,
-                                         Shepard pressure of other-phase neighbours, midpoint
-                                         predictor-corrector, density threshold */
-  FEAT_GENERALIZED_DISSIPATION = 2048,  /* scheme generalized-dissipation (paper 004) */
-  FEAT_RIEMANN = 4096,     /* scheme riemann: Riemann pair terms, density re-initialisation, dual time stepping */
-  FEAT_TRANSPORT_VELOCITY = 8192,  /* scheme riemann with a light phase: its transport-velocity shift */
-  FEAT_DIFFUSION = 16384,  /* density diffusion (delta > 0); in delta-plus and delta-sph also the
-                              renormalised density gradient it reads */
-  FEAT_VISCOSITY = 32768   /* artificial (alpha > 0) or laminar (a phase's viscosity > 0) viscosity */
-};
-
-/** Work arrays of the scheme, sized to the particle capacity (those read at halo slots) or to
- *  the owned particles (the RK4 state and sums, the derivatives, the free-surface region and
- *  normals); optional ones stay NULL when the scene does not need them. */
-struct work {
-  long capacity, owned_capacity;
-  double *vol;                     /* particle volume m/rho of every slot, this stage [m^dim] */
-  double *grad_rho[3];             /* renormalised density gradient [kg/m^4] */
-  double *div;                     /* velocity divergence <div u> over all neighbours [1/s] */
-  double *drho, *dv[3];            /* right-hand sides of the current stage */
-  double *x0[3], *v0[3], *rho0;    /* state at the start of the step */
-  double *sum_x[3], *sum_v[3], *sum_rho;   /* RK4 weighted sums of the stage derivatives */
-  double *du[3];                   /* FEAT_SHIFT: shifting velocity [m/s] */
-  double *surface;                 /* FEAT_SURFACE: 1 for detected free-surface particles */
-  double *region;                  /* FEAT_SURFACE: 1 in the free-surface region (band) */
-  double *normal[3];               /* FEAT_SURFACE: outward unit normal */
-  double *lambda;                  /* FEAT_SURFACE: smallest eigenvalue of the B matrix */
-  double *rho_s;                   /* FEAT_SHEPARD: same-phase Shepard density [kg/m^3] */
-  double *interface_normal[3];     /* FEAT_SURFACE_TENSION: unit normal of the colour gradient,
-                                      toward the other phase; 0 off the interface band */
-  double *colour_grad;             /* FEAT_SURFACE_TENSION: |grad chi| on the band, else 0 [1/m] */
-  double *kappa_curvature;         /* FEAT_SURFACE_TENSION: div n, 0 off the band [1/m] */
-  double *p_shepard;               /* FEAT_SAME_PHASE_CONTINUITY: Shepard pressure over the fluid of
-                                      every phase, the particle included [Pa] */
-  double *gd_gamma;                /* FEAT_GENERALIZED_DISSIPATION: Shepard sum incl. self, 1 on
-                                      wall ghosts [-] */
-  double *gd_grad_p[3];            /* FEAT_GENERALIZED_DISSIPATION: renormalised <grad p>^L [Pa/m] */
-};
-
 struct engine {
   const struct case_def *c;
   MPI_Comm comm;
   int rank, n_ranks;
-  struct kernel kern;
   struct space space;
   struct halo halo;
   struct parts p;
   struct work w;
   struct nlist nl;                 /* neighbour lists of the owned fluid, rebuilt every step */
-  double h, vol0;                  /* smoothing length [m], dx^dim [m^dim] */
-  double c_max;                    /* largest phase sound speed [m/s] */
-  unsigned features;               /* FEAT_* of the assembled pipeline */
+  struct physics_params prm;       /* what the passes read (physics/pass_ctx.h) */
   int stage;                       /* current RK stage 0..3 */
-  double rho_min[CASE_MAX_PHASES]; /* global minimum density per phase (first stage) [kg/m^3] */
-  struct interface_weights iface[3];   /* eps/phi/kappa per pair relation (case interface mode) */
-  double damper_coef[CASE_MAX_PHASES + 1];  /* alpha2 c0 h of phase k at [k + 1]; 0 for gases, walls [m^2/s] */
   double time, dt;                 /* [s] */
-  double stage_time;               /* time of the state the current stage evaluates [s] */
+  double stage_time;               /* time of the state the current stage evaluates (prm.frames) [s] */
   int moving_walls;                /* the case has walls with a prescribed motion */
-  struct frame frames[CASE_MAX_WALLS];   /* the moving walls' frames at stage_time */
   long step;
   double step_start_time;          /* time and step at the start of the current step */
   long step_start;
   int n_ops;
   struct stage_op ops[ENGINE_MAX_OPS];
-  long pass_pairs;                 /* pair evaluations of the running pass */
-  long n_surface;                  /* owned particles detected on the free surface (last detection) */
+  long n_surface;                  /* owned particles detected on the free surface, summed over the
+                                      detections so far (free_surface_auto reads it after the
+                                      first step, when one has run) */
   int no_free_surface;             /* free_surface auto found none at t = 0 */
-  long renorm_fallbacks;           /* particles whose renormalisation matrix was singular */
-  int renorm_reported;
+  long renorm_fallbacks;           /* particles whose renormalisation matrix was singular, summed
+                                      over the passes so far */
   /* load balance */
   long n_repartitions, last_repartition_step;
   double t_compute;                /* this rank's pass time since the last balance check [s] */
@@ -150,8 +92,6 @@ struct engine {
   int restarted;                   /* continues from a checkpoint */
   long wall_guard_hits;            /* normal-velocity corrections by the wall guard on this rank */
   /* scheme riemann (engine_step_dual.c) */
-  double lattice_w_sum;            /* sum of W over the undisturbed lattice, self included [1/m^dim] */
-  double tv_pressure;              /* background pressure of the transport velocity this step [Pa] */
   double dt_acoustic;              /* the last acoustic sub-step [s] */
   long n_acoustic;                 /* acoustic sub-steps of the last advection step */
   int dual_ops[ENGINE_MAX_OPS];    /* index in ops of each of its operations, -1 when absent */
@@ -207,8 +147,17 @@ double dual_advection_dt(struct engine *e, double a_tv);
 /** Scheme riemann: the acoustic sub-step time.cfl h / (c_max + |v|_max) [s]. Collective. */
 double dual_acoustic_dt(struct engine *e);
 
-/** Run operation k of the pipeline (a pass or a halo update), timed. */
+/** Run operation k of the pipeline (a pass or a halo update), timed; a pass's counts (pairs, renorm
+ *  fallbacks, free-surface particles) are added to the operation's and the engine's totals. */
 void engine_run_op(struct engine *e, int k);
+
+/** The context the passes of engine e run with: its case, parameters, particles, work arrays,
+ *  neighbour lists and cells, and zero counts. */
+struct pass_ctx engine_pass_ctx(struct engine *e);
+
+/** After a step: wall_guard_apply (physics/wall_guard.h) on this rank's particles; the corrections
+ *  made are added to e->wall_guard_hits and returned. Local: no communication. */
+long engine_wall_guard(struct engine *e);
 
 /** After an RK stage: stop (2 on every rank) if an owned fluid particle has a non-finite
  *  derivative (drho/dt, du/dt, shifting velocity), else 0. Collective. */
@@ -258,10 +207,6 @@ static inline int engine_particle_work(int phase) { return phase == PHASE_WALL ?
  *  cells and neighbour lists built at the start of the step hold every pair in the kernel
  *  support at every stage [m]. */
 double engine_shift_max(const struct engine *e);
-
-/** The capillary time-step limit 0.25 (rho_min h^3 / (2 pi sigma))^(1/2), rho_min the smallest
- *  rho0 of the phases (Brackbill et al. 1992; Adami et al. 2010) [s]. */
-double engine_capillary_dt(const struct engine *e);
 
 /** 1 if slot i is a ghost of a moving wall. */
 static inline int engine_moving_ghost(const struct engine *e, long i) {

@@ -15,7 +15,7 @@ struct scheme {
   void (*pressure)(struct engine *e);              /* RK stage: the operations that set the pressure before
                                                       the wall ghosts (NULL: volumes and lists after them) */
   void (*rhs)(struct engine *e);                   /* RK stage: its right-hand-side operations */
-  double (*time_step)(const struct engine *e, double a_max, double adv_max, const char **limit);
+  double (*time_step)(const struct pass_ctx *ctx, double a_max, double adv_max, const char **limit);
                                                    /* RK stage: its dt limits (NULL: its own stepping) */
   int (*step)(struct engine *e);                   /* one step; returns 0 or 2 */
   int (*refuse)(const struct case_def *c, char *err, size_t len);   /* options it cannot run: 0, or 1
@@ -28,7 +28,7 @@ const struct scheme *scheme_of(enum scheme_kind k);
 /* What engine_step.c offers the entries. */
 
 /** Append an operation (a pass, or a halo update of the HF_* fields in mask when pass is NULL). */
-void engine_add_op(struct engine *e, const char *name, void (*pass)(struct engine *), int mask, int once);
+void engine_add_op(struct engine *e, const char *name, pass_fn pass, int mask, int once);
 
 /** Append the particle volumes and the neighbour lists (the lists once per step). */
 void engine_add_volumes_and_lists(struct engine *e);
@@ -45,6 +45,6 @@ int engine_step_rk(struct engine *e);
 
 /** The time-step limits of paper 000 Eq. 12 (paper 003's CFL with same-phase-continuity); *limit
  *  names the smallest. adv_max is not used (the motion limit is the caller's). */
-double engine_delta_plus_dt(const struct engine *e, double a_max, double adv_max, const char **limit);
+double engine_delta_plus_dt(const struct pass_ctx *ctx, double a_max, double adv_max, const char **limit);
 
 #endif

@@ -1,8 +1,9 @@
-/* passes.h — the passes over particles and neighbour pairs that build the right-hand sides. */
+/* passes.h — the passes over particles and neighbour pairs that build the right-hand sides; each
+ * takes the context of physics/pass_ctx.h. */
 #ifndef MPSPH_PASSES_H
 #define MPSPH_PASSES_H
 
-#include "engine/engine.h"
+#include "physics/pass_ctx.h"
 
 /** The separation r_i - r_j of slots i and j into dx [m]; returns its squared length [m^2]. */
 static inline double pair_separation(const struct parts *p, int dim, long i, long j, double *dx) {
@@ -15,10 +16,11 @@ static inline double pair_separation(const struct parts *p, int dim, long i, lon
 }
 
 /** Body force per unit mass at particle i: gravity and the quadratic potential [m/s^2]. */
-static inline void body_acceleration(const struct engine *e, long i, double *f) {
-  const struct case_def *c = e->c;
+static inline void body_acceleration(const struct pass_ctx *ctx, long i, double *f) {
+  const struct case_def *c = ctx->c;
+  const struct parts *p = ctx->p;
   double w2 = c->potential_omega * c->potential_omega;
-  for (int d = 0; d < e->p.dim; d++) f[d] = c->gravity[d] - w2 * (e->p.x[d][i] - c->potential_centre[d]);
+  for (int d = 0; d < p->dim; d++) f[d] = c->gravity[d] - w2 * (p->x[d][i] - c->potential_centre[d]);
 }
 
 /** Harmonic mean 2 a b/(a + b) of two viscosities [Pa s], the viscosity of a pair of phases
@@ -28,24 +30,25 @@ static inline double harmonic_mean(double a, double b) { return a + b > 0 ? 2.0 
 /** Dynamic viscosity of phase ph in the pair viscous terms of schemes same-phase-continuity and
  *  generalized-dissipation: the phase's own plus the artificial viscosity
  *  alpha h c0 rho0 / (2 (dim + 2)) [Pa s]. */
-static inline double phase_viscosity_total(const struct engine *e, int ph) {
-  const struct phase *f = &e->c->phases[ph];
-  return f->viscosity + e->c->alpha * e->h * f->c0 * f->rho0 / (2.0 * (e->p.dim + 2));
+static inline double phase_viscosity_total(const struct pass_ctx *ctx, int ph) {
+  const struct phase *f = &ctx->c->phases[ph];
+  return f->viscosity + ctx->c->alpha * ctx->prm->h * f->c0 * f->rho0 / (2.0 * (ctx->p->dim + 2));
 }
 
 /** Work on owned particle i with its neighbour list (empty for wall ghosts). */
-typedef void (*particle_fn)(struct engine *e, long i, const struct neighbours *nb);
+typedef void (*particle_fn)(struct pass_ctx *ctx, long i, const struct neighbours *nb);
 
 /** Call fluid (or wall, for wall ghosts; either may be NULL) for every owned particle, in slot
  *  order (which is global cell order). */
-void pass_for_each_owned(struct engine *e, particle_fn fluid, particle_fn wall);
+void pass_for_each_owned(struct pass_ctx *ctx, particle_fn fluid, particle_fn wall);
 
-/** Build the neighbour lists of the owned fluid particles (once per step, at the first stage). */
-void pass_neighbour_lists(struct engine *e);
+/** Build the neighbour lists of the owned fluid particles within ctx->prm->list_radius (once per
+ *  step, at the first stage). */
+void pass_neighbour_lists(struct pass_ctx *ctx);
 
 /** Volumes m/rho of all slots (owned and halo) for the pair passes of this stage [m^dim]; runs
  *  after the halo updates of the state and the wall ghost values. */
-void pass_volumes(struct engine *e);
+void pass_volumes(struct pass_ctx *ctx);
 
 /** Shepard sums at one point: {sum W V, and sum W V times p, rho, u[3]} over every fluid phase
  *  (all) and over each phase on its own (phase[k]); per phase also sum W V rho r[3] when
@@ -57,87 +60,87 @@ struct shepard {
 };
 
 /** Called for each slot j within the kernel support of a point, with wv = W V_j [-]. */
-typedef void (*near_fn)(void *ctx, const struct engine *e, long j, double wv);
+typedef void (*near_fn)(void *arg, const struct pass_ctx *ctx, long j, double wv);
 
 /** Call fn for every fluid particle (and wall ghost if with_walls) within the kernel support of
  *  xs, over the cells around xs's cell in global cell order; returns the number of calls. */
-long visit_near(const struct engine *e, const double *xs, int with_walls, near_fn fn, void *ctx);
+long visit_near(const struct pass_ctx *ctx, const double *xs, int with_walls, near_fn fn, void *arg);
 
 /** Shepard sums per phase at xs over the fluid particles of the cells around xs's cell; counts
  *  the pairs into *pairs. */
-void shepard_at(const struct engine *e, const double *xs, struct shepard *s, long *pairs);
+void shepard_at(const struct pass_ctx *ctx, const double *xs, struct shepard *s, long *pairs);
 
 /** The mirror point of wall ghost k now [m]: its position plus its body-frame offset (the
  *  mirror array), turned with the wall. */
-void wall_mirror_point(const struct engine *e, long k, double *xs);
+void wall_mirror_point(const struct pass_ctx *ctx, long k, double *xs);
 
 /** Wall ghosts: Shepard interpolation of p, u, rho at the mirror point (over every phase, or
  *  with the density-weighted interface pressure over the phase with the largest Shepard weight
  *  there), hydrostatic and inertial pressure correction (from the mirror point, or with the
  *  density-weighted interface pressure and several phases from each neighbour with its own
  *  density) and free-/no-slip velocity (Marrone et al. 2011). Owned ghosts only. */
-void pass_wall_ghosts(struct engine *e);
+void pass_wall_ghosts(struct pass_ctx *ctx);
 
 /** Scheme delta-sph, per stage: the same-phase Shepard density of the owned fluid (paper 001
  *  Eq. 13) and the pressure from it. */
-void pass_shepard_density(struct engine *e);
+void pass_shepard_density(struct pass_ctx *ctx);
 
 /** The density the renormalised gradient and the delta-SPH diffusion act on: the Shepard density
  *  with scheme delta-sph, otherwise the state density. */
-static inline const double *diffused_density(const struct engine *e) {
-  return (e->features & FEAT_SHEPARD) ? e->w.rho_s : e->p.rho;
+static inline const double *diffused_density(const struct pass_ctx *ctx) {
+  return (ctx->prm->features & FEAT_SHEPARD) ? ctx->w->rho_s : ctx->p->rho;
 }
 
 /** Scheme same-phase-continuity, per stage: the Shepard pressure of every owned fluid particle
  *  over the fluid of all phases, itself included (paper 003 Eq. 26, AMB-003-2 of the notes) [Pa]. */
-void pass_shepard_pressure(struct engine *e);
+void pass_shepard_pressure(struct pass_ctx *ctx);
 
 /** Scheme same-phase-continuity, per stage: drho/dt with the velocity divergence over same-phase
  *  neighbours and walls and the delta diffusion over all neighbours, du/dt with the pressure
  *  gradient and viscosity over all neighbours, other-phase neighbours entering with their
  *  Shepard pressure and its density in the phase of i (paper 003 Eqs. 23-27). */
-void pass_same_phase_rhs(struct engine *e);
+void pass_same_phase_rhs(struct pass_ctx *ctx);
 
 /** Scheme same-phase-continuity: add to acc the wall repulsion of paper 003 Eq. 39 on gas
  *  particle i from wall ghost b, c0 |(u_i - u_b).n_b| W_ib h^d / |r_ib.n_b| along the ghost's unit
  *  normal n_b (toward its mirror point) while i approaches the wall, else nothing [m/s^2]. */
-void spc_wall_repulsion(const struct engine *e, long i, long b, double *acc);
+void spc_wall_repulsion(const struct pass_ctx *ctx, long i, long b, double *acc);
 
 /** Per stage: particle volumes; renormalised density gradient over same-phase neighbours
  *  (paper 000 Eq. 7); velocity divergence over all neighbours; with shifting, the shifting
  *  velocity du of Eqs. 13-15. */
-void pass_gradients(struct engine *e);
+void pass_gradients(struct pass_ctx *ctx);
 
 /** Free-surface detection (Marrone et al. 2010): smallest eigenvalue of B over all neighbours,
  *  normal, umbrella scan of the candidates. Sets surface, normal, lambda of owned fluid. */
-void pass_free_surface(struct engine *e);
+void pass_free_surface(struct pass_ctx *ctx);
 
 /** The free-surface region: detected particles and those within surface_band h of one. */
-void pass_surface_band(struct engine *e);
+void pass_surface_band(struct pass_ctx *ctx);
 
 /** Shifting velocity of owned fluid particle i from sum_j grad_i W_ij V_j (Eqs. 13-15). */
-void shifting_velocity(struct engine *e, long i, const double *sum_gradw, int n_neighbours);
+void shifting_velocity(const struct pass_ctx *ctx, long i, const double *sum_gradw, int n_neighbours);
 
 /** Continuity (divergence, delta-SPH diffusion, delta-u terms) and momentum (pressure gradient
  *  with tensile control, viscosity, delta-u term, acoustic damper, sharpness force, body forces)
  *  right-hand sides of owned fluid particles (paper 000 Eqs. 5-10, 16-20). */
-void pass_fluid_rhs(struct engine *e);
+void pass_fluid_rhs(struct pass_ctx *ctx);
 
 /** Surface tension, first pass: the colour gradient over the fluid neighbours of the other
  *  phases, its magnitude [1/m] and unit normal of owned fluid particles (both 0 where the
  *  gradient is below 0.01/h); 0 for wall ghosts. */
-void pass_interface_normals(struct engine *e);
+void pass_interface_normals(struct pass_ctx *ctx);
 
 /** Surface tension, second pass (after pass_fluid_rhs, the normals halo-updated): curvature
  *  kappa = div n (renormalised divergence) [1/m] and the CSF acceleration
  *  -sigma kappa n |grad chi| / rho added to du/dt of owned fluid particles (Brackbill et al. 1992). */
-void pass_surface_tension(struct engine *e);
+void pass_surface_tension(struct pass_ctx *ctx);
 
-/** Wall guard, after every force of the stage (src/engine/wall_guard.c): an owned fluid particle within
+/** Wall guard, after every force of the stage (src/physics/wall_guard.c): an owned fluid particle within
  *  physics.wall_guard x dx of a wall's boundary (or inside its solid) loses the part of du/dt
  *  (relative to the wall's acceleration) that points into the wall while it is not moving away
  *  from it, and the part of its shifting velocity that points into the wall. */
-void pass_wall_guard(struct engine *e);
+void pass_wall_guard(struct pass_ctx *ctx);
 
 /** Scheme riemann: 1 if phase ph is a light phase: a gas (not `incompressible`) and a phase with a
  *  larger rho0 exists. */
@@ -148,35 +151,39 @@ double lattice_kernel_sum(const struct kernel *k, double dx);
 
 /** Scheme riemann, once per advection step: density re-initialisation of the owned fluid (paper
  *  002 Eqs. 10-11) and the pressure from it. */
-void pass_density_reinit(struct engine *e);
+void pass_density_reinit(struct pass_ctx *ctx);
 
 /** Scheme riemann: du/dt of the owned fluid from the Riemann pressure, viscosity and body forces
  *  (paper 002 Eq. 6). */
-void pass_riemann_momentum(struct engine *e);
+void pass_riemann_momentum(struct pass_ctx *ctx);
 
 /** Scheme riemann: drho/dt of the owned fluid with the Riemann interface velocity (Eqs. 6, 9). */
-void pass_riemann_continuity(struct engine *e);
+void pass_riemann_continuity(struct pass_ctx *ctx);
 
 /** Scheme riemann: the transport-velocity acceleration -(2 p0_tv / rho_i) sum_j V_j grad_i W_ij of
  *  the owned light-phase particles into dv (0 for the heavy phase) [m/s^2] (Eq. 12). */
-void pass_transport_acceleration(struct engine *e);
+void pass_transport_acceleration(struct pass_ctx *ctx);
 
 /** Scheme generalized-dissipation, first pass: the Shepard sum Gamma (with the particle itself)
  *  and the renormalised pressure gradient <grad p>^L over all neighbours, phases and wall ghosts
  *  of owned fluid (paper 004 Eqs. 9, 47-48; 0 where the matrix is near-singular); Gamma = 1 and
  *  no gradient for wall ghosts. */
-void pass_gd_gradients(struct engine *e);
+void pass_gd_gradients(struct pass_ctx *ctx);
 
 /** Scheme generalized-dissipation, second pass: continuity with the generalized density
  *  dissipation and its volume correction factor (paper 004 Eqs. 7, 36, 46 or 49 by
  *  physics.dissipation_form) and momentum with Grenier's pressure gradient, the Hu-Adams
  *  viscosity and the body forces (Eqs. 9, 10) of owned fluid. */
-void pass_gd_rhs(struct engine *e);
+void pass_gd_rhs(struct pass_ctx *ctx);
 
 /** The time step of paper 004 Eq. 23 [s]: cfl h / (c_max + u_max) (u_max the largest advection
  *  speed [m/s]; the paper's cfl is 0.25), 0.25 (h/a)^1/2 with a the larger of |g| and a_max
  *  (the largest acceleration [m/s^2]), 0.125 rho0 h^2 / mu per phase and, with surface tension,
  *  0.5 (rho0_min h^3 / (2 pi sigma))^1/2; *limit names the smallest. */
-double gd_time_step(const struct engine *e, double a_max, double u_max, const char **limit);
+double gd_time_step(const struct pass_ctx *ctx, double a_max, double u_max, const char **limit);
+
+/** The capillary time-step limit 0.25 (rho_min h^3 / (2 pi sigma))^(1/2), rho_min the smallest
+ *  rho0 of the phases (Brackbill et al. 1992; Adami et al. 2010) [s]. */
+double capillary_dt(const struct case_def *c, double h);
 
 #endif

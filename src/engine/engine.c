@@ -16,7 +16,6 @@
 #include <malloc.h>
 #endif
 #include "engine/signal_stop.h"
-#include "engine/wall_guard.h"
 #include "base/mem.h"
 
 #define BALANCE_CHECK_EVERY 100 /* steps between load-balance checks (the timing window) */
@@ -177,18 +176,19 @@ int engine_cell_grid(const struct case_def *c, double support, struct grid *g) {
 /* Kernel, grid, halo depth. Returns 0 or 1. */
 static int setup_space(struct engine *e) {
   const struct case_def *c = e->c;
-  e->h = c->h_over_dx * c->dx;
-  e->vol0 = c->dimension == 2 ? c->dx * c->dx : c->dx * c->dx * c->dx;
-  kernel_init(&e->kern, c->kernel, c->dimension, e->h);
+  e->prm.h = c->h_over_dx * c->dx;
+  e->prm.vol0 = c->dimension == 2 ? c->dx * c->dx : c->dx * c->dx * c->dx;
+  kernel_init(&e->prm.kern, c->kernel, c->dimension, e->prm.h);
+  e->prm.list_radius = e->prm.kern.support * ENGINE_CELL_SKIN;
   struct grid g;
-  if (engine_cell_grid(c, e->kern.support, &g)) {
+  if (engine_cell_grid(c, e->prm.kern.support, &g)) {
     report(e, "the domain has too many cells for this resolution (more than 2^31)");
     return 1;
   }
-  int layers = engine_halo_layers(c, &g, e->kern.support);
+  int layers = engine_halo_layers(c, &g, e->prm.kern.support);
   space_init(&e->space, &g, e->rank, e->n_ranks, layers, SPACE_TOP_CELLS_PER_RANK);
-  e->c_max = 0;
-  for (int ph = 0; ph < c->n_phases; ph++) e->c_max = fmax(e->c_max, c->phases[ph].c0);
+  e->prm.c_max = 0;
+  for (int ph = 0; ph < c->n_phases; ph++) e->prm.c_max = fmax(e->prm.c_max, c->phases[ph].c0);
   return 0;
 }
 
@@ -255,7 +255,7 @@ static void free_surface_arrays(struct work *w) {
  * free surface at t = 0 (a closed tank full of fluid), and drop its passes and arrays. */
 static void free_surface_auto(struct engine *e) {
   long n = e->n_surface;
-  if (e->c->free_surface != FREE_SURFACE_AUTO || !(e->features & FEAT_SURFACE)) return;
+  if (e->c->free_surface != FREE_SURFACE_AUTO || !(e->prm.features & FEAT_SURFACE)) return;
   MPI_Allreduce(MPI_IN_PLACE, &n, 1, MPI_LONG, MPI_SUM, e->comm);
   if (e->rank == 0)
     printf("free surface: %ld particles detected at t = 0: detection %s\n", n, n ? "kept" : "switched off");
@@ -300,7 +300,7 @@ static void report_end(const struct engine *e, int signo, long steps) {
 /* Advance one step with everything that follows it: migration, load balance, outputs. */
 static int step_and_output(struct engine *e) {
   int status = engine_step(e);
-  if (!status) wall_guard_apply(e);
+  if (!status) engine_wall_guard(e);
   if (!status && e->step == 1) free_surface_auto(e);
   if (!status) status = engine_rebuild(e);
   if (!status) status = balance(e);

@@ -58,7 +58,7 @@ int engine_check_derivatives(struct engine *e) {
 static int in_solid(const struct engine *e, long i, char *what, size_t len) {
   double x[3] = {0, 0, 0}, depth;
   for (int d = 0; d < e->p.dim; d++) x[d] = e->p.x[d][i];
-  int w = walls_solid_at(e->c, e->frames, x, &depth);
+  int w = walls_solid_at(e->c, e->prm.frames, x, &depth);
   if (w < 0 || depth <= SOLID_DEPTH_DX * e->c->dx) return 0;
   snprintf(what, len, "entered the solid of walls.%d, %.3g dx beyond its boundary", w,
            depth / e->c->dx);

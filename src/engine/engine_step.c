@@ -5,9 +5,11 @@
 #include <stdlib.h>
 #include <string.h>
 #include "physics/eos.h"
+#include "engine/engine.h"
 #include "physics/passes.h"
 #include "base/mem.h"
 #include "engine/schemes.h"
+#include "physics/wall_guard.h"
 
 #define MOTION_SAFETY 0.75   /* fraction of the allowed motion per step used by the dt limit */
 
@@ -58,11 +60,12 @@ static int work_slots(struct work *w, int dim, struct work_slot *t) {
 
 /* 1 if an optional array of a feature that is on has not been allocated yet. */
 static int optional_missing(const struct engine *e) {
-  return ((e->features & FEAT_SHIFT) && !e->w.du[0]) || ((e->features & FEAT_DIFFUSION) && !e->w.grad_rho[0]) || ((e->features & FEAT_SURFACE) && !e->w.surface) ||
-         ((e->features & FEAT_SHEPARD) && !e->w.rho_s) ||
-         ((e->features & FEAT_SURFACE_TENSION) && !e->w.colour_grad) ||
-         ((e->features & FEAT_SAME_PHASE_CONTINUITY) && !e->w.p_shepard) ||
-         ((e->features & FEAT_GENERALIZED_DISSIPATION) && !e->w.gd_gamma);
+  const unsigned f = e->prm.features;
+  return ((f & FEAT_SHIFT) && !e->w.du[0]) || ((f & FEAT_DIFFUSION) && !e->w.grad_rho[0]) ||
+         ((f & FEAT_SURFACE) && !e->w.surface) || ((f & FEAT_SHEPARD) && !e->w.rho_s) ||
+         ((f & FEAT_SURFACE_TENSION) && !e->w.colour_grad) ||
+         ((f & FEAT_SAME_PHASE_CONTINUITY) && !e->w.p_shepard) ||
+         ((f & FEAT_GENERALIZED_DISSIPATION) && !e->w.gd_gamma);
 }
 
 void engine_work_reserve(struct engine *e) {
@@ -72,7 +75,7 @@ void engine_work_reserve(struct engine *e) {
   if (e->p.n_owned > n_owned) n_owned = e->p.n_owned + e->p.n_owned / 16 + 64;   /* room to migrate */
   if (n_all <= w->capacity && n_owned <= w->owned_capacity && !optional_missing(e)) return;
   for (int k = 0, n = work_slots(w, e->p.dim, t); k < n; k++)
-    if (!t[k].feature || (e->features & t[k].feature)) *t[k].a = grow(*t[k].a, t[k].halo ? n_all : n_owned);
+    if (!t[k].feature || (e->prm.features & t[k].feature)) *t[k].a = grow(*t[k].a, t[k].halo ? n_all : n_owned);
   w->capacity = n_all;
   w->owned_capacity = n_owned;
 }
@@ -118,8 +121,7 @@ static int halo_field_list(struct engine *e, int mask, double **f) {
 
 /* engine_assemble makes at most 17 operations (ENGINE_MAX_OPS, engine.h), whatever the case; one
  * more is a programming error, stopped here before it overflows e->ops. */
-void engine_add_op(struct engine *e, const char *name, void (*pass)(struct engine *), int mask,
-                   int once) {
+void engine_add_op(struct engine *e, const char *name, pass_fn pass, int mask, int once) {
   if (e->n_ops == ENGINE_MAX_OPS) {
     fprintf(stderr, "mpsph: internal error: the stage pipeline has more than %d operations (adding '%s')\n",
             ENGINE_MAX_OPS, name);
@@ -160,10 +162,11 @@ unsigned engine_option_terms(const struct engine *e) {
 
 /* alpha2 c0 h of each liquid phase (index phase + 1; walls at 0), 0 for gases. */
 static void damper_coefficients(struct engine *e) {
-  e->damper_coef[0] = 0;
+  e->prm.damper_coef[0] = 0;
   for (int ph = 0; ph < e->c->n_phases; ph++) {
     const struct phase *f = &e->c->phases[ph];
-    e->damper_coef[ph + 1] = (e->features & FEAT_DAMPER) && f->incompressible ? e->c->acoustic_damper * f->c0 * e->h : 0;
+    int damped = (e->prm.features & FEAT_DAMPER) && f->incompressible;
+    e->prm.damper_coef[ph + 1] = damped ? e->c->acoustic_damper * f->c0 * e->prm.h : 0;
   }
 }
 
@@ -187,11 +190,11 @@ void engine_assemble(struct engine *e) {
   int n_old = e->n_ops;
   memcpy(old, e->ops, sizeof old);
   const struct scheme *s = scheme_of(e->c->scheme);
-  e->features = s->terms(e) | s->feature;
+  e->prm.features = s->terms(e) | s->feature;
   e->moving_walls = 0;
   for (int w = 0; w < e->c->n_walls; w++) e->moving_walls |= e->c->walls[w].moving;
   damper_coefficients(e);
-  interface_table(e->c->interface_mode, e->iface);
+  interface_table(e->c->interface_mode, e->prm.iface);
   e->n_ops = 0;
   s->pipeline(e);
   carry_op_totals(e, old, n_old);
@@ -200,7 +203,7 @@ void engine_assemble(struct engine *e) {
 
 void engine_assemble_stage(struct engine *e) {
   const struct scheme *s = scheme_of(e->c->scheme);
-  unsigned f = e->features;
+  unsigned f = e->prm.features;
   engine_add_op(e, "halo: positions, velocities, densities, pressures", NULL, HF_POS | HF_VEL | HF_RHO | HF_P, 0);
   if (s->pressure) s->pressure(e);
   if (f & FEAT_WALLS) {
@@ -232,12 +235,12 @@ void engine_print_pipeline(const struct engine *e) {
   if (e->rank) return;
   printf("terms:");
   for (int k = 0; k < (int)(sizeof names / sizeof names[0]); k++)
-    if (e->features & (1u << k)) printf(" [%s]", names[k]);
-  if (e->features & FEAT_RIEMANN) printf(" [Riemann SPH, density re-initialisation, dual time stepping]");
-  if (e->features & FEAT_TRANSPORT_VELOCITY) printf(" [transport velocity of the light phases]");
-  if (e->features & FEAT_DIFFUSION) printf(" [density diffusion]");
-  if (e->features & FEAT_VISCOSITY) printf(" [viscosity]");
-  printf("\npipeline per %s (%d operations):\n", (e->features & FEAT_RIEMANN) ? "advection step" : "RK stage", e->n_ops);
+    if (e->prm.features & (1u << k)) printf(" [%s]", names[k]);
+  if (e->prm.features & FEAT_RIEMANN) printf(" [Riemann SPH, density re-initialisation, dual time stepping]");
+  if (e->prm.features & FEAT_TRANSPORT_VELOCITY) printf(" [transport velocity of the light phases]");
+  if (e->prm.features & FEAT_DIFFUSION) printf(" [density diffusion]");
+  if (e->prm.features & FEAT_VISCOSITY) printf(" [viscosity]");
+  printf("\npipeline per %s (%d operations):\n", (e->prm.features & FEAT_RIEMANN) ? "advection step" : "RK stage", e->n_ops);
   for (int k = 0; k < e->n_ops; k++) printf("  %d. %s\n", k + 1, e->ops[k].name);
 }
 
@@ -246,9 +249,11 @@ void engine_run_op(struct engine *e, int k) {
   struct stage_op *op = &e->ops[k];
   double t0 = MPI_Wtime();
   if (op->pass) {
-    e->pass_pairs = 0;
-    op->pass(e);
-    op->pairs += e->pass_pairs;
+    struct pass_ctx ctx = engine_pass_ctx(e);
+    op->pass(&ctx);
+    op->pairs += ctx.out.pairs;
+    e->renorm_fallbacks += ctx.out.renorm_fallbacks;
+    e->n_surface += ctx.out.n_surface;
   } else {
     halo_update(&e->halo, &e->p, fields, halo_field_list(e, op->halo_fields, fields));
   }
@@ -261,31 +266,44 @@ void engine_evaluate(struct engine *e, int skip_state_halo) {
     if (!e->ops[k].once_per_step || e->stage <= 0) engine_run_op(e, k);
 }
 
+struct pass_ctx engine_pass_ctx(struct engine *e) {
+  return (struct pass_ctx){.c = e->c, .prm = &e->prm, .p = &e->p, .w = &e->w, .nl = &e->nl, .space = &e->space};
+}
+
+long engine_wall_guard(struct engine *e) {
+  struct pass_ctx ctx = engine_pass_ctx(e);
+  long hits = wall_guard_apply(&ctx);
+  e->wall_guard_hits += hits;
+  return hits;
+}
+
+/* The counts of passes run outside the pipeline (engine_ghosts_now) are not kept: they are not
+ * part of a stage. */
 void engine_ghosts_now(struct engine *e) {
-  int shepard = (e->features & FEAT_SHEPARD) != 0, walls = (e->features & FEAT_WALLS) != 0;
+  int shepard = (e->prm.features & FEAT_SHEPARD) != 0, walls = (e->prm.features & FEAT_WALLS) != 0;
   if (!shepard && !walls) return;
   double *fields[32];
+  struct pass_ctx ctx = engine_pass_ctx(e);
   halo_update(&e->halo, &e->p, fields, halo_field_list(e, HF_POS | HF_VEL | HF_RHO | HF_P, fields));
   if (shepard) {   /* delta-sph: the stage's first operations, which set the pressure */
-    pass_volumes(e);
-    pass_neighbour_lists(e);
-    pass_shepard_density(e);
+    pass_volumes(&ctx);
+    pass_neighbour_lists(&ctx);
+    pass_shepard_density(&ctx);
     halo_update(&e->halo, &e->p, fields, halo_field_list(e, HF_RHO_SHEPARD | HF_P, fields));
   }
   if (walls) {
-    pass_wall_ghosts(e);
+    pass_wall_ghosts(&ctx);
     halo_update(&e->halo, &e->p, fields, halo_field_list(e, HF_VEL | HF_RHO | HF_P | HF_MASS, fields));
   }
-  e->pass_pairs = 0;
 }
 
-double engine_shift_max(const struct engine *e) { return 0.5 * (ENGINE_CELL_SKIN - 1.0) * e->kern.support; }
+double engine_shift_max(const struct engine *e) { return 0.5 * (ENGINE_CELL_SKIN - 1.0) * e->prm.kern.support; }
 
 /* |u_w|^2 of moving-wall ghost i at the current stage [m^2/s^2]. */
 static double wall_speed2(const struct engine *e, long i) {
   double x[3] = {0, 0, 0}, u[3] = {0, 0, 0}, u2 = 0;
   for (int d = 0; d < e->p.dim; d++) x[d] = e->p.x[d][i];
-  frame_velocity(&e->frames[e->p.wall[i]], e->p.dim, x, u);
+  frame_velocity(&e->prm.frames[e->p.wall[i]], e->p.dim, x, u);
   for (int d = 0; d < e->p.dim; d++) u2 += u[d] * u[d];
   return u2;
 }
@@ -296,7 +314,7 @@ static void reduce_first_stage(struct engine *e, double *a_max, double *adv_max)
   const struct parts *p = &e->p;
   int np = e->c->n_phases;
   double max2[2] = {0, 0};   /* |a|^2, |u + du|^2 */
-  for (int ph = 0; ph < np; ph++) e->rho_min[ph] = INFINITY;
+  for (int ph = 0; ph < np; ph++) e->prm.rho_min[ph] = INFINITY;
   for (long i = 0; i < p->n_owned; i++) {
     int ph = p->phase[i];
     if (engine_moving_ghost(e, i)) max2[1] = fmax(max2[1], wall_speed2(e, i));
@@ -309,24 +327,24 @@ static void reduce_first_stage(struct engine *e, double *a_max, double *adv_max)
     }
     if (!(a2 <= max2[0])) max2[0] = a2;   /* NaN propagates */
     if (!(w2 <= max2[1])) max2[1] = w2;
-    e->rho_min[ph] = fmin(e->rho_min[ph], p->rho[i]);
+    e->prm.rho_min[ph] = fmin(e->prm.rho_min[ph], p->rho[i]);
   }
   MPI_Allreduce(MPI_IN_PLACE, max2, 2, MPI_DOUBLE, MPI_MAX, e->comm);
-  MPI_Allreduce(MPI_IN_PLACE, e->rho_min, np, MPI_DOUBLE, MPI_MIN, e->comm);
+  MPI_Allreduce(MPI_IN_PLACE, e->prm.rho_min, np, MPI_DOUBLE, MPI_MIN, e->comm);
   *a_max = sqrt(max2[0]);
   *adv_max = sqrt(max2[1]);
 }
 
 /* The stable sound speed of Eq. 12 for every liquid/gas pair present:
  * c_stab = c0_l sqrt(gamma_g rho0_l / (gamma_l rho_min_g)) (Sun et al. 2021). */
-static double stable_sound_speed(const struct engine *e) {
-  const struct case_def *c = e->c;
+static double stable_sound_speed(const struct pass_ctx *ctx) {
+  const struct case_def *c = ctx->c;
   double c_stab = 0;
   for (int l = 0; l < c->n_phases; l++)
     for (int g = 0; g < c->n_phases; g++) {
       const struct phase *pl = &c->phases[l], *pg = &c->phases[g];
-      if (!pl->incompressible || pg->incompressible || !isfinite(e->rho_min[g])) continue;
-      c_stab = fmax(c_stab, pl->c0 * sqrt(pg->gamma * pl->rho0 / (pl->gamma * e->rho_min[g])));
+      if (!pl->incompressible || pg->incompressible || !isfinite(ctx->prm->rho_min[g])) continue;
+      c_stab = fmax(c_stab, pl->c0 * sqrt(pg->gamma * pl->rho0 / (pl->gamma * ctx->prm->rho_min[g])));
     }
   return c_stab;
 }
@@ -339,32 +357,26 @@ static void limit_by(double *dt, const char **limit, double candidate, const cha
   }
 }
 
-double engine_capillary_dt(const struct engine *e) {
-  double rho_min = INFINITY;
-  for (int ph = 0; ph < e->c->n_phases; ph++) rho_min = fmin(rho_min, e->c->phases[ph].rho0);
-  return 0.25 * sqrt(rho_min * e->h * e->h * e->h / (2.0 * 3.14159265358979323846 * e->c->surface_tension));
-}
-
 /* The time-step limits of paper 000 Eq. 12: acoustic (with c_stab), acceleration, viscous,
  * damper; *limit names the smallest term. Scheme same-phase-continuity takes paper 003's
  * CFL h / c0 (section 3.3) without c_stab and without the acceleration and artificial-viscosity
  * limits; the physical viscous and capillary limits stay. */
-double engine_delta_plus_dt(const struct engine *e, double a_max, double adv_max, const char **limit) {
-  const struct case_def *c = e->c;
+double engine_delta_plus_dt(const struct pass_ctx *ctx, double a_max, double adv_max, const char **limit) {
+  const struct case_def *c = ctx->c;
   (void)adv_max;   /* the motion limit is time_step's */
-  const int paper003 = (e->features & FEAT_SAME_PHASE_CONTINUITY) != 0;
-  double c_eff = paper003 ? e->c_max : fmax(e->c_max, stable_sound_speed(e));
-  double dt = c->cfl * e->h / c_eff;
-  *limit = c_eff > e->c_max ? "acoustic (c_stab)" : "acoustic";
-  if (a_max > 0 && !paper003) limit_by(&dt, limit, 0.25 * sqrt(e->h / a_max), "acceleration");
+  const int paper003 = (ctx->prm->features & FEAT_SAME_PHASE_CONTINUITY) != 0;
+  double c_eff = paper003 ? ctx->prm->c_max : fmax(ctx->prm->c_max, stable_sound_speed(ctx));
+  double dt = c->cfl * ctx->prm->h / c_eff;
+  *limit = c_eff > ctx->prm->c_max ? "acoustic (c_stab)" : "acoustic";
+  if (a_max > 0 && !paper003) limit_by(&dt, limit, 0.25 * sqrt(ctx->prm->h / a_max), "acceleration");
   for (int ph = 0; ph < c->n_phases; ph++) {
     const struct phase *f = &c->phases[ph];
-    if (c->alpha > 0 && !paper003) limit_by(&dt, limit, e->h / (c->alpha * f->c0), "artificial viscosity");
-    if (f->viscosity > 0) limit_by(&dt, limit, 0.125 * e->h * e->h * f->rho0 / f->viscosity, "viscous");
-    if ((e->features & FEAT_DAMPER) && f->incompressible)
-      limit_by(&dt, limit, c->cfl * e->h / (c->acoustic_damper * f->c0), "acoustic damper");
+    if (c->alpha > 0 && !paper003) limit_by(&dt, limit, ctx->prm->h / (c->alpha * f->c0), "artificial viscosity");
+    if (f->viscosity > 0) limit_by(&dt, limit, 0.125 * ctx->prm->h * ctx->prm->h * f->rho0 / f->viscosity, "viscous");
+    if ((ctx->prm->features & FEAT_DAMPER) && f->incompressible)
+      limit_by(&dt, limit, c->cfl * ctx->prm->h / (c->acoustic_damper * f->c0), "acoustic damper");
   }
-  if (e->features & FEAT_SURFACE_TENSION) limit_by(&dt, limit, engine_capillary_dt(e), "capillary");
+  if (ctx->prm->features & FEAT_SURFACE_TENSION) limit_by(&dt, limit, capillary_dt(c, ctx->prm->h), "capillary");
   return dt;
 }
 
@@ -374,7 +386,8 @@ double engine_delta_plus_dt(const struct engine *e, double a_max, double adv_max
 static double time_step(struct engine *e, const char **limit) {
   double a_max, adv_max;
   reduce_first_stage(e, &a_max, &adv_max);
-  double dt = scheme_of(e->c->scheme)->time_step(e, a_max, adv_max, limit);
+  struct pass_ctx ctx = engine_pass_ctx(e);
+  double dt = scheme_of(e->c->scheme)->time_step(&ctx, a_max, adv_max, limit);
   if (adv_max > 0) limit_by(&dt, limit, MOTION_SAFETY * engine_shift_max(e) / adv_max, "motion (cell skin)");
   return dt;
 }
@@ -440,7 +453,7 @@ static void density_threshold(struct parts *p, long i, const struct phase *f) {
 static void rk_update(struct engine *e, const struct rk_scheme *rk, int s, const struct frame *start) {
   struct parts *p = &e->p;
   struct work *w = &e->w;
-  const int last = s == rk->stages - 1, threshold = (e->features & FEAT_SAME_PHASE_CONTINUITY) != 0;
+  const int last = s == rk->stages - 1, threshold = (e->prm.features & FEAT_SAME_PHASE_CONTINUITY) != 0;
   double ws = rk->weight[s], step = !last ? rk->next[s] * e->dt : e->dt / rk->divisor;
   for (long i = 0; i < p->n_owned; i++) {
     if (p->phase[i] == PHASE_WALL) continue;
@@ -462,7 +475,7 @@ static void rk_update(struct engine *e, const struct rk_scheme *rk, int s, const
 int engine_step(struct engine *e) { return scheme_of(e->c->scheme)->step(e); }
 
 int engine_step_rk(struct engine *e) {
-  const struct rk_scheme *rk = (e->features & FEAT_SAME_PHASE_CONTINUITY) ? &MIDPOINT_PC : &RK4;
+  const struct rk_scheme *rk = (e->prm.features & FEAT_SAME_PHASE_CONTINUITY) ? &MIDPOINT_PC : &RK4;
   struct frame start[CASE_MAX_WALLS];
   engine_work_reserve(e);
   save_state(e);
@@ -472,7 +485,7 @@ int engine_step_rk(struct engine *e) {
   for (int s = 0; s < rk->stages; s++) {
     e->stage = s;
     e->stage_time = e->time + rk->offset[s] * e->dt;
-    wall_frames(e, e->stage_time, e->frames);
+    wall_frames(e, e->stage_time, e->prm.frames);
     engine_evaluate(e, s == 0);
     if (engine_check_derivatives(e)) return 2;
     if (s == 0) {

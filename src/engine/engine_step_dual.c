@@ -14,8 +14,8 @@
 #include <math.h>
 #include <string.h>
 #include "physics/eos.h"
+#include "engine/engine.h"
 #include "physics/passes.h"
-#include "engine/wall_guard.h"
 
 #define DUAL_ADVECTION_CFL 0.25   /* Eq. 24 */
 #define DUAL_MOTION_SAFETY 0.75   /* fraction of the cell skin's motion allowance used by dt_ad */
@@ -28,7 +28,7 @@ _Static_assert(N_DUAL_OPS <= ENGINE_MAX_OPS, "the dual pipeline must fit in engi
 
 static const struct {
   const char *name;
-  void (*pass)(struct engine *);
+  pass_fn pass;
   int halo_fields;
   unsigned feature;   /* present only with this feature (0: always) */
 } dual_table[N_DUAL_OPS] = {
@@ -50,12 +50,12 @@ static const struct {
 void engine_assemble_dual(struct engine *e) {
   for (int k = 0; k < N_DUAL_OPS; k++) {
     e->dual_ops[k] = -1;
-    if (dual_table[k].feature && !(e->features & dual_table[k].feature)) continue;
+    if (dual_table[k].feature && !(e->prm.features & dual_table[k].feature)) continue;
     e->dual_ops[k] = e->n_ops;
     e->ops[e->n_ops++] = (struct stage_op){.name = dual_table[k].name, .pass = dual_table[k].pass,
                                            .halo_fields = dual_table[k].halo_fields};
   }
-  e->lattice_w_sum = lattice_kernel_sum(&e->kern, e->c->dx);
+  e->prm.lattice_w_sum = lattice_kernel_sum(&e->prm.kern, e->c->dx);
 }
 
 /* Run operation id of the table if the pipeline has it. */
@@ -98,10 +98,10 @@ double dual_advection_dt(struct engine *e, double a_tv) {
   const struct case_def *c = e->c;
   double m[3];
   fluid_maxima(e, 0, m);
-  double v_max = m[0], dt = DUAL_ADVECTION_CFL * e->h / fmax(c->u_max, v_max);
+  double v_max = m[0], dt = DUAL_ADVECTION_CFL * e->prm.h / fmax(c->u_max, v_max);
   for (int ph = 0; ph < c->n_phases; ph++)
     if (c->phases[ph].viscosity > 0)
-      dt = fmin(dt, DUAL_ADVECTION_CFL * e->h * e->h * c->phases[ph].rho0 / c->phases[ph].viscosity);
+      dt = fmin(dt, DUAL_ADVECTION_CFL * e->prm.h * e->prm.h * c->phases[ph].rho0 / c->phases[ph].viscosity);
   /* motion v dt + a_tv dt^2 / 2 within the allowance B: dt = 2B / (v + sqrt(v^2 + 2 a_tv B)) */
   double b = motion_budget(e), root = v_max + sqrt(v_max * v_max + 2.0 * a_tv * b);
   if (root > 0) dt = fmin(dt, 2.0 * b / root);
@@ -111,8 +111,8 @@ double dual_advection_dt(struct engine *e, double a_tv) {
 /* The acoustic sub-step [s] from the maxima m of fluid_maxima, and the capillary limit with
  * surface tension. */
 static double acoustic_dt(const struct engine *e, const double *m) {
-  double dt = e->c->cfl * e->h / (e->c_max + m[0]);
-  return (e->features & FEAT_SURFACE_TENSION) ? fmin(dt, engine_capillary_dt(e)) : dt;
+  double dt = e->c->cfl * e->prm.h / (e->prm.c_max + m[0]);
+  return (e->prm.features & FEAT_SURFACE_TENSION) ? fmin(dt, capillary_dt(e->c, e->prm.h)) : dt;
 }
 
 double dual_acoustic_dt(struct engine *e) {
@@ -130,7 +130,7 @@ static void transport_velocity(struct engine *e, double *a_tv) {
     if (riemann_light_phase(e->c, ph)) rho0 = fmax(rho0, e->c->phases[ph].rho0);
   fluid_maxima(e, 1, m);
   double u = fmax(m[0], e->c->u_max);
-  e->tv_pressure = TRANSPORT_COEFFICIENT * rho0 * u * u;
+  e->prm.tv_pressure = TRANSPORT_COEFFICIENT * rho0 * u * u;
   run(e, OP_VOLUMES);   /* of the re-initialised densities */
   run(e, OP_TRANSPORT);
   fluid_maxima(e, 0, m);
@@ -171,18 +171,24 @@ static int check_step(struct engine *e, double dt, const char *limit) {
   return status;
 }
 
+/* pass_wall_guard outside the pipeline: no acceleration (or shift) into a wall. */
+static void guard_accelerations(struct engine *e) {
+  struct pass_ctx ctx = engine_pass_ctx(e);
+  pass_wall_guard(&ctx);
+}
+
 /* One acoustic sub-step of dt [s]; the wall guard (doc/theory.md §5) acts on the acceleration
  * and on the new velocity of each sub-step. Returns 0 or 2. */
 static int acoustic_substep(struct engine *e, double dt) {
-  int guard = (e->features & FEAT_WALLS) && e->c->wall_guard > 0;
+  int guard = (e->prm.features & FEAT_WALLS) && e->c->wall_guard > 0;
   compress(e, 0.5 * dt);
   move(e, 0.5 * dt, 0);
   refresh(e);
   for (int id = OP_MOMENTUM; id <= OP_SURFACE_TENSION; id++) run(e, id);
   if (engine_check_derivatives(e)) return 2;
-  if (guard) pass_wall_guard(e);
+  if (guard) guard_accelerations(e);
   accelerate(e, dt);
-  if (guard) wall_guard_apply(e);
+  if (guard) engine_wall_guard(e);
   move(e, 0.5 * dt, 0);
   refresh(e);
   run(e, OP_CONTINUITY);
@@ -201,11 +207,11 @@ static int advection_start(struct engine *e) {
     for (int d = 0; d < p->dim; d++) e->w.dv[d][i] = 0;
   for (int id = OP_STATE_HALO; id <= OP_REINIT_HALO; id++) run(e, id);
   double a_tv = 0;
-  if (e->features & FEAT_TRANSPORT_VELOCITY) transport_velocity(e, &a_tv);
+  if (e->prm.features & FEAT_TRANSPORT_VELOCITY) transport_velocity(e, &a_tv);
   e->dt = dual_advection_dt(e, a_tv);
   if (check_step(e, e->dt, "advection")) return 2;
   e->dt = fmin(e->dt, e->c->t_end - e->time);
-  if (a_tv > 0 && (e->features & FEAT_WALLS) && e->c->wall_guard > 0) pass_wall_guard(e);   /* no shift into a wall */
+  if (a_tv > 0 && (e->prm.features & FEAT_WALLS) && e->c->wall_guard > 0) guard_accelerations(e);   /* no shift into a wall */
   if (a_tv > 0) move(e, 0.5 * e->dt * e->dt, 1);
   refresh(e);
   run(e, OP_CONTINUITY);

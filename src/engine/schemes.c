@@ -16,7 +16,7 @@ static void gradients_and_rhs_ops(struct engine *e) {
   static const char *names[2][2] = {{"gradients: div u", "gradients: div u, shifting velocity"},
                                     {"gradients: renormalised density gradient, div u",
                                      "gradients: renormalised density gradient, div u, shifting velocity"}};
-  unsigned f = e->features;
+  unsigned f = e->prm.features;
   engine_add_op(e, names[(f & FEAT_DIFFUSION) != 0][(f & FEAT_SHIFT) != 0], pass_gradients, 0, 0);
   int halo = ((f & FEAT_DIFFUSION) ? HF_GRAD_RHO : 0) | ((f & FEAT_SHIFT) ? HF_SHIFT : 0) | ((f & FEAT_DAMPER) ? HF_DIV : 0);
   if (halo) engine_add_op(e, "halo: gradient-pass results", NULL, halo, 0);

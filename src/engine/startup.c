@@ -239,7 +239,7 @@ static int number_and_generate(struct engine *e, const struct init_rows *rows, c
 
 int engine_generate(struct engine *e) {
   struct init_rows rows;
-  init_rows_open(&rows, e->c, e->kern.support);
+  init_rows_open(&rows, e->c, e->prm.kern.support);
   long *starts = mem_calloc(e->n_ranks + 1, sizeof(long), "row blocks");
   for (int r = 0; r < e->n_ranks; r++) starts[r] = block_start(&rows, r, e->n_ranks);
   starts[e->n_ranks] = rows.n_rows;

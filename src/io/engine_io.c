@@ -263,7 +263,7 @@ int engine_output(struct engine *e, int force) {
   int snapshot = due(e->time, snap_interval, &e->next_output, force) && e->last_snapshot_step != e->step;
   int probes = c->n_probes && due(e->time, c->probes_interval, &e->next_probes, force) &&
                e->last_probes_step != e->step;
-  if ((snapshot || probes) && (e->features & FEAT_SHEPARD) && e->step > 0)
+  if ((snapshot || probes) && (e->prm.features & FEAT_SHEPARD) && e->step > 0)
     engine_ghosts_now(e);   /* delta-sph: write the Shepard pressure its forces use */
   if (snapshot) {
     e->last_snapshot_step = e->step;

@@ -117,51 +117,52 @@ static void sample_point(const struct engine *e, const struct probe *p, int i, i
 
 /* ---- interpolation at one point ---- */
 
-struct probe_ctx {
+struct probe_sample {
   const double *x;
   struct probe_sums sums;
   int phase;          /* the gauge's phase */
   double colour;      /* sum W V over that phase */
 };
 
-/* Add slot j to the pressure moments around ctx->x (offsets in units of h). */
-static void add_pressure(void *ctx, const struct engine *e, long j, double wv) {
-  struct probe_ctx *q = ctx;
+/* Add slot j to the pressure moments around q->x (offsets in units of h). */
+static void add_pressure(void *arg, const struct pass_ctx *ctx, long j, double wv) {
+  struct probe_sample *q = arg;
   double r[3] = {0, 0, 0};
-  for (int d = 0; d < e->p.dim; d++) r[d] = (e->p.x[d][j] - q->x[d]) / e->h;
-  probe_sums_add(&q->sums, r, wv, e->p.p[j]);
+  for (int d = 0; d < ctx->p->dim; d++) r[d] = (ctx->p->x[d][j] - q->x[d]) / ctx->prm->h;
+  probe_sums_add(&q->sums, r, wv, ctx->p->p[j]);
 }
 
 /* Add slot j to the colour of the gauge's phase. */
-static void add_colour(void *ctx, const struct engine *e, long j, double wv) {
-  struct probe_ctx *q = ctx;
-  if (e->p.phase[j] == q->phase) q->colour += wv;
+static void add_colour(void *arg, const struct pass_ctx *ctx, long j, double wv) {
+  struct probe_sample *q = arg;
+  if (ctx->p->phase[j] == q->phase) q->colour += wv;
 }
 
 /* The pressure [Pa] of probe p at x over the fluid and the wall ghosts (which carry the pressure
  * extrapolated across the wall, so that a sensor on the wall reads the wall pressure). */
-static double pressure_at(const struct engine *e, const struct probe *p, const double *x) {
-  struct probe_ctx q = {.x = x};
-  probe_sums_init(&q.sums, e->p.dim);
-  visit_near(e, x, 1, add_pressure, &q);
+static double pressure_at(const struct pass_ctx *ctx, const struct probe *p, const double *x) {
+  struct probe_sample q = {.x = x};
+  probe_sums_init(&q.sums, ctx->p->dim);
+  visit_near(ctx, x, 1, add_pressure, &q);
   return p->interpolation == INTERP_MLS ? probe_sums_mls(&q.sums) : probe_sums_shepard(&q.sums);
 }
 
 /* The colour sum W V of the probe's phase at x [-]: 1 inside the phase, 1/2 on its surface. */
-static double colour_at(const struct engine *e, const struct probe *p, const double *x) {
-  struct probe_ctx q = {.x = x, .phase = p->phase};
-  visit_near(e, x, 0, add_colour, &q);
+static double colour_at(const struct pass_ctx *ctx, const struct probe *p, const double *x) {
+  struct probe_sample q = {.x = x, .phase = p->phase};
+  visit_near(ctx, x, 0, add_colour, &q);
   return q.colour;
 }
 
 /* Slots out[0..n-1] of a pressure sensor or gauge: the values at the sample points this rank
  * owns (the others stay zero). */
-static void sample_probe(const struct engine *e, const struct probe *p, int n, double *out) {
+static void sample_probe(const struct engine *e, const struct pass_ctx *ctx, const struct probe *p, int n,
+                         double *out) {
   double x[3], step;
   for (int i = 0; i < n; i++) {
     sample_point(e, p, i, n, x, &step);
     if (space_cell_owner(&e->space, grid_cell_clamped(&e->space.grid, x)) != e->rank) continue;
-    out[i] = p->kind == PROBE_PRESSURE ? pressure_at(e, p, x) : colour_at(e, p, x);
+    out[i] = p->kind == PROBE_PRESSURE ? pressure_at(ctx, p, x) : colour_at(ctx, p, x);
   }
 }
 
@@ -226,10 +227,11 @@ void probes_write_row(struct engine *e, FILE *f) {
     e->probe_buf_len = total;
   }
   double *buf = e->probe_buf;
+  const struct pass_ctx ctx = engine_pass_ctx(e);   /* the interpolation's view of the particles */
   memset(buf, 0, (size_t)total * sizeof(double));
   for (int k = 0, at = 0; k < c->n_probes; at += n[k++]) {
     if (c->probes[k].kind == PROBE_INTEGRAL) integrate_probe(e, &c->probes[k], buf + at);
-    else sample_probe(e, &c->probes[k], n[k], buf + at);
+    else sample_probe(e, &ctx, &c->probes[k], n[k], buf + at);
   }
   MPI_Reduce(e->rank ? buf : MPI_IN_PLACE, buf, total, MPI_DOUBLE, MPI_SUM, 0, e->comm);
   if (e->rank == 0) {

@@ -44,29 +44,29 @@ static inline double other_phase_pressure(double pi, double rhoi, double pj, dou
  * diffusion; a term that is off has its pair terms compiled out). The sums are accumulated in
  * locals and the arrays read through restrict pointers, so that nothing goes through memory
  * inside the loop. */
-static inline __attribute__((always_inline)) void fluid_sums(const struct engine *e,
+static inline __attribute__((always_inline)) void fluid_sums(const struct pass_ctx *ctx,
                                                              const struct centre *ci,
                                                              const struct neighbours *nb,
                                                              struct fluid_sums *out, long *pairs,
                                                              const int dim, const int DU,
                                                              const int DAMP, const int PHASES,
                                                              const int DISS) {
-  const struct parts *p = &e->p;
-  const struct work *w = &e->w;
+  const struct parts *p = ctx->p;
+  const struct work *w = ctx->w;
   const double *restrict x[3] = {p->x[0], p->x[1], p->x[2]}, *restrict v[3] = {p->v[0], p->v[1], p->v[2]};
   const double *restrict du[3] = {w->du[0], w->du[1], w->du[2]};
   const double *restrict grad_rho[3] = {w->grad_rho[0], w->grad_rho[1], w->grad_rho[2]};
   const double *restrict rho = p->rho, *restrict pres = p->p, *restrict vol = w->vol, *restrict div = w->div;
-  const double *restrict rho_d = diffused_density(e);   /* the density the diffusion acts on */
+  const double *restrict rho_d = diffused_density(ctx);   /* the density the diffusion acts on */
   const int *restrict phase = p->phase;
   const long i = ci->i;
   const int ph = ci->phase;
-  const double pi = pres[i], rhoi = rho[i], eta2 = 0.01 * e->h * e->h, support2 = e->kern.support2;
+  const double pi = pres[i], rhoi = rho[i], eta2 = 0.01 * ctx->prm->h * ctx->prm->h, support2 = ctx->prm->kern.support2;
   const double p_sign = ci->p_sign;
   const int visc = DISS & 1, diff = DISS & 2;
-  const int weighted = PHASES && e->c->interface_pressure == IFACE_P_DENSITY_WEIGHTED;
-  const int visc_other = PHASES && visc && e->c->interface_viscosity == IFACE_VISC_HARMONIC;
-  const double rho0i = e->c->phases[ph].rho0, mui = e->c->phases[ph].viscosity;
+  const int weighted = PHASES && ctx->c->interface_pressure == IFACE_P_DENSITY_WEIGHTED;
+  const int visc_other = PHASES && visc && ctx->c->interface_viscosity == IFACE_VISC_HARMONIC;
+  const double rho0i = ctx->c->phases[ph].rho0, mui = ctx->c->phases[ph].viscosity;
   double xi[3], vi[3], dui[3] = {0, 0, 0}, gri[3];
   for (int d = 0; d < dim; d++) {
     xi[d] = x[d][i];
@@ -87,7 +87,7 @@ static inline __attribute__((always_inline)) void fluid_sums(const struct engine
     }
     if (r2 >= support2) continue;
     n_pairs++;
-    const double fv = kernel_f(&e->kern, r2) * vol[j];
+    const double fv = kernel_f(&ctx->prm->kern, r2) * vol[j];
     const int rel = phase[j] == PHASE_WALL ? PAIR_WALL : (!PHASES || phase[j] == ph) ? PAIR_SAME : PAIR_OTHER;
     /* other phase: a fluid particle of another phase, or a ghost standing for one (rho0 of
      * another phase), so that fluid and ghost neighbours of a phase act alike */
@@ -96,7 +96,7 @@ static inline __attribute__((always_inline)) void fluid_sums(const struct engine
     double psum = pj + p_sign * pi;
     for (int d = 0; d < dim; d++) s.grad_p[d] += psum * fv * dx[d];
     if (DU) {
-      const struct interface_weights *iw = &e->iface[rel];
+      const struct interface_weights *iw = &ctx->prm->iface[rel];
       double cii, cj, dui_g = 0, duj_g = 0;
       interface_continuity_coefficients(iw, rhoi, rho[j], &cii, &cj);
       for (int d = 0; d < dim; d++) {
@@ -116,7 +116,7 @@ static inline __attribute__((always_inline)) void fluid_sums(const struct engine
       for (int d = 0; d < dim; d++) s.sharp[d] -= (fabs(pi) + fabs(pres[j])) * fv * dx[d];
     if (PHASES && rel == PAIR_OTHER) {
       if (visc_other) {   /* mu_ij pi_ij is symmetric in i and j, so the pair's forces cancel */
-        const double mu_ij = harmonic_mean(mui, e->c->phases[phase[j]].viscosity), pi_ij = -dvdx / (r2 + eta2);
+        const double mu_ij = harmonic_mean(mui, ctx->c->phases[phase[j]].viscosity), pi_ij = -dvdx / (r2 + eta2);
         for (int d = 0; d < dim; d++) s.visc_other[d] += mu_ij * pi_ij * fv * dx[d];
       }
       continue;
@@ -137,7 +137,7 @@ static inline __attribute__((always_inline)) void fluid_sums(const struct engine
   *pairs += n_pairs;
 }
 
-#define FLUID_SUMS(D, U, A, P, S) fluid_sums(e, ci, nb, s, pairs, D, U, A, P, S)
+#define FLUID_SUMS(D, U, A, P, S) fluid_sums(ctx, ci, nb, s, pairs, D, U, A, P, S)
 #define DAMPED(D, U, P, S) \
   (damp == 0 ? FLUID_SUMS(D, U, 0, P, S) : damp == 1 ? FLUID_SUMS(D, U, 1, P, S) : FLUID_SUMS(D, U, 2, P, S))
 #ifdef MPSPH_SINGLE_PHASE   /* benchmark build: the multiphase specialisations compiled out */
@@ -150,11 +150,11 @@ static inline __attribute__((always_inline)) void fluid_sums(const struct engine
  * one dispatcher with the other DISS values: there gcc compiled the loops of the ones with a term
  * off about 70 % slower per pair than their instruction counts, measured with callgrind, imply). */
 #define DISPATCH_DISS(S) \
-  static __attribute__((noinline)) void dispatch_##S(const struct engine *e, const struct centre *ci, \
+  static __attribute__((noinline)) void dispatch_##S(const struct pass_ctx *ctx, const struct centre *ci, \
                                                      const struct neighbours *nb, struct fluid_sums *s, \
                                                      long *pairs, int du, int damp, int phases) { \
     (void)phases; \
-    if (e->p.dim == 2) du ? PHASED(2, 1, S) : PHASED(2, 0, S); \
+    if (ctx->p->dim == 2) du ? PHASED(2, 1, S) : PHASED(2, 0, S); \
     else du ? PHASED(3, 1, S) : PHASED(3, 0, S); \
   }
 DISPATCH_DISS(0)
@@ -163,54 +163,54 @@ DISPATCH_DISS(2)
 DISPATCH_DISS(3)
 
 /* Call the specialisation of fluid_sums for the case's terms. */
-static void dispatch(const struct engine *e, const struct centre *ci, const struct neighbours *nb,
+static void dispatch(const struct pass_ctx *ctx, const struct centre *ci, const struct neighbours *nb,
                      struct fluid_sums *s, long *pairs) {
-  static void (*const by_diss[4])(const struct engine *, const struct centre *, const struct neighbours *,
+  static void (*const by_diss[4])(const struct pass_ctx *, const struct centre *, const struct neighbours *,
                                   struct fluid_sums *, long *, int, int, int) = {dispatch_0, dispatch_1,
                                                                                  dispatch_2, dispatch_3};
-  unsigned f = e->features;
+  unsigned f = ctx->prm->features;
   int du = (f & FEAT_DELTA_U) != 0;
-  int phases = e->c->n_phases == 1 ? 0 : (f & FEAT_SHARPNESS) ? 2 : 1;
-  int damp = !(f & FEAT_DAMPER) ? 0 : e->c->damper_form == DAMPER_SYMMETRIC ? 1 : 2;
-  if (!e->c->phases[ci->phase].incompressible) damp = 0;
+  int phases = ctx->c->n_phases == 1 ? 0 : (f & FEAT_SHARPNESS) ? 2 : 1;
+  int damp = !(f & FEAT_DAMPER) ? 0 : ctx->c->damper_form == DAMPER_SYMMETRIC ? 1 : 2;
+  if (!ctx->c->phases[ci->phase].incompressible) damp = 0;
   int diss = ((f & FEAT_VISCOSITY) ? 1 : 0) | ((f & FEAT_DIFFUSION) ? 2 : 0);
-  by_diss[diss](e, ci, nb, s, pairs, du, damp, phases);
+  by_diss[diss](ctx, ci, nb, s, pairs, du, damp, phases);
 }
 
 /* Combine the sums into drho/dt and du/dt of particle i. */
-static void finish(struct engine *e, const struct centre *ci, const struct fluid_sums *s) {
-  const struct parts *p = &e->p;
-  const struct phase *f = &e->c->phases[ci->phase];
+static void finish(struct pass_ctx *ctx, const struct centre *ci, const struct fluid_sums *s) {
+  const struct parts *p = ctx->p;
+  const struct phase *f = &ctx->c->phases[ci->phase];
   const long i = ci->i;
-  double k_visc = e->c->alpha * e->h * f->c0 * f->rho0 + 2.0 * (p->dim + 2) * f->viscosity;
+  double k_visc = ctx->c->alpha * ctx->prm->h * f->c0 * f->rho0 + 2.0 * (p->dim + 2) * f->viscosity;
   double k_visc_other = 2.0 * (p->dim + 2);   /* times mu_ij, inside visc_other */
-  double k_damp = e->damper_coef[1 + ci->phase], g[3];
-  body_acceleration(e, i, g);
+  double k_damp = ctx->prm->damper_coef[1 + ci->phase], g[3];
+  body_acceleration(ctx, i, g);
   /* delta-sph integrates m/V: its diffusion is -(V/rho^S) times the volume diffusion (paper 001
    * Eq. 21 with the factor 2 restored), i.e. the density diffusion scaled by rho_i / rho^S_i */
-  double diffusion = e->c->delta * e->h * f->c0 * s->diff;
-  if (e->features & FEAT_SHEPARD) diffusion *= p->rho[i] / e->w.rho_s[i];
-  e->w.drho[i] = -p->rho[i] * e->w.div[i] + diffusion + s->drho_du;
+  double diffusion = ctx->c->delta * ctx->prm->h * f->c0 * s->diff;
+  if (ctx->prm->features & FEAT_SHEPARD) diffusion *= p->rho[i] / ctx->w->rho_s[i];
+  ctx->w->drho[i] = -p->rho[i] * ctx->w->div[i] + diffusion + s->drho_du;
   for (int d = 0; d < p->dim; d++)
-    e->w.dv[d][i] = (-s->grad_p[d] + k_visc * s->visc[d] + k_visc_other * s->visc_other[d] + s->mom_du[d] +
-                     e->c->interface_sharpness * s->sharp[d]) / p->rho[i] + k_damp * s->damper[d] + g[d];
+    ctx->w->dv[d][i] = (-s->grad_p[d] + k_visc * s->visc[d] + k_visc_other * s->visc_other[d] + s->mom_du[d] +
+                     ctx->c->interface_sharpness * s->sharp[d]) / p->rho[i] + k_damp * s->damper[d] + g[d];
 }
 
 /* Phase and tensile-control sign of particle i. */
-static void centre_of(const struct engine *e, long i, struct centre *ci) {
+static void centre_of(const struct pass_ctx *ctx, long i, struct centre *ci) {
   ci->i = i;
-  ci->phase = e->p.phase[i];
-  int in_region = e->w.region && e->w.region[i] > 0;
-  ci->p_sign = (e->features & FEAT_TIC) && e->p.p[i] < 0 && !in_region ? -1.0 : 1.0;
+  ci->phase = ctx->p->phase[i];
+  int in_region = ctx->w->region && ctx->w->region[i] > 0;
+  ci->p_sign = (ctx->prm->features & FEAT_TIC) && ctx->p->p[i] < 0 && !in_region ? -1.0 : 1.0;
 }
 
 /* Both right-hand sides of fluid particle i. */
-static void fluid_rhs(struct engine *e, long i, const struct neighbours *nb) {
+static void fluid_rhs(struct pass_ctx *ctx, long i, const struct neighbours *nb) {
   struct centre ci;
   struct fluid_sums sum;
-  centre_of(e, i, &ci);
-  dispatch(e, &ci, nb, &sum, &e->pass_pairs);
-  finish(e, &ci, &sum);
+  centre_of(ctx, i, &ci);
+  dispatch(ctx, &ci, nb, &sum, &ctx->out.pairs);
+  finish(ctx, &ci, &sum);
 }
 
-void pass_fluid_rhs(struct engine *e) { pass_for_each_owned(e, fluid_rhs, NULL); }
+void pass_fluid_rhs(struct pass_ctx *ctx) { pass_for_each_owned(ctx, fluid_rhs, NULL); }

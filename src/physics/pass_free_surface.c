@@ -17,17 +17,17 @@
 #define SINGULAR_DET 1e-3   /* det(B) below which the normal is -sum grad W itself */
 
 /* B matrix and sum of kernel gradients of particle i over all neighbours. */
-static void moments(const struct engine *e, long i, const struct neighbours *nb, double *mt,
+static void moments(const struct pass_ctx *ctx, long i, const struct neighbours *nb, double *mt,
                     double *sum_gw, long *pairs) {
-  const struct parts *p = &e->p;
+  const struct parts *p = ctx->p;
   const int dim = p->dim;
   for (int k = 0; k < 9; k++) mt[k] = 0;
   for (int d = 0; d < 3; d++) sum_gw[d] = 0;
   struct neighbours it = *nb;
   for (long j; neighbours_next(&it, &j);) {
     double dx[3], r2 = pair_separation(p, dim, i, j, dx);
-    if (r2 >= e->kern.support2) continue;
-    double fv = kernel_f(&e->kern, r2) * e->w.vol[j];
+    if (r2 >= ctx->prm->kern.support2) continue;
+    double fv = kernel_f(&ctx->prm->kern, r2) * ctx->w->vol[j];
     for (int a = 0; a < dim; a++) {
       sum_gw[a] += fv * dx[a];
       for (int b = 0; b < dim; b++) mt[a * dim + b] -= fv * dx[a] * dx[b];
@@ -47,11 +47,11 @@ static void outward_normal(int dim, const double *mt, const double *sum_gw, doub
 }
 
 /* 1 if some neighbour lies in the umbrella region above candidate i (so i is not on the surface). */
-static int umbrella_covered(const struct engine *e, long i, const struct neighbours *nb,
+static int umbrella_covered(const struct pass_ctx *ctx, long i, const struct neighbours *nb,
                             const double *n) {
-  const struct parts *p = &e->p;
+  const struct parts *p = ctx->p;
   const int dim = p->dim;
-  const double h = e->h;
+  const double h = ctx->prm->h;
   double t[3];
   for (int d = 0; d < dim; d++) t[d] = p->x[d][i] + h * n[d];
   struct neighbours it = *nb;
@@ -64,7 +64,7 @@ static int umbrella_covered(const struct engine *e, long i, const struct neighbo
       rt2 += rt[d] * rt[d];
       rn += rt[d] * n[d];
     }
-    if (rij2 >= e->kern.support2) continue;
+    if (rij2 >= ctx->prm->kern.support2) continue;
     if (rij2 >= 2 * h * h) {
       if (rt2 < h * h) return 1;
     } else if (fabs(rn) + sqrt(fmax(rt2 - rn * rn, 0.0)) < h) {
@@ -75,46 +75,43 @@ static int umbrella_covered(const struct engine *e, long i, const struct neighbo
 }
 
 /* Classify owned fluid particle i. */
-static void detect(struct engine *e, long i, const struct neighbours *nb) {
-  const int dim = e->p.dim;
+static void detect(struct pass_ctx *ctx, long i, const struct neighbours *nb) {
+  const int dim = ctx->p->dim;
   double mt[9], sum_gw[3], n[3];
-  moments(e, i, nb, mt, sum_gw, &e->pass_pairs);
+  moments(ctx, i, nb, mt, sum_gw, &ctx->out.pairs);
   double lambda = linalg_min_eigenvalue(dim, mt);
   outward_normal(dim, mt, sum_gw, n);
   int surface = lambda <= LAMBDA_SURFACE;
-  if (!surface && lambda <= LAMBDA_INTERIOR) surface = !umbrella_covered(e, i, nb, n);
-  e->w.surface[i] = surface;
-  e->w.lambda[i] = lambda;
-  for (int d = 0; d < dim; d++) e->w.normal[d][i] = n[d];
-  e->n_surface += surface;
+  if (!surface && lambda <= LAMBDA_INTERIOR) surface = !umbrella_covered(ctx, i, nb, n);
+  ctx->w->surface[i] = surface;
+  ctx->w->lambda[i] = lambda;
+  for (int d = 0; d < dim; d++) ctx->w->normal[d][i] = n[d];
+  ctx->out.n_surface += surface;
 }
 
 /* A wall ghost is never on the free surface. */
-static void clear_wall(struct engine *e, long i, const struct neighbours *nb) {
+static void clear_wall(struct pass_ctx *ctx, long i, const struct neighbours *nb) {
   (void)nb;
-  e->w.surface[i] = 0;
-  e->w.region[i] = 0;
-  e->w.lambda[i] = 1;
+  ctx->w->surface[i] = 0;
+  ctx->w->region[i] = 0;
+  ctx->w->lambda[i] = 1;
 }
 
-void pass_free_surface(struct engine *e) {
-  e->n_surface = 0;
-  pass_for_each_owned(e, detect, clear_wall);
-}
+void pass_free_surface(struct pass_ctx *ctx) { pass_for_each_owned(ctx, detect, clear_wall); }
 
 /* 1 if fluid particle i lies within surface_band h of a detected particle (or is one). */
-static void band_of(struct engine *e, long i, const struct neighbours *nb) {
-  const struct parts *p = &e->p;
-  double band = fmin(e->c->surface_band * e->h, e->kern.support), band2 = band * band;
-  int in = e->w.surface[i] > 0;
+static void band_of(struct pass_ctx *ctx, long i, const struct neighbours *nb) {
+  const struct parts *p = ctx->p;
+  double band = fmin(ctx->c->surface_band * ctx->prm->h, ctx->prm->kern.support), band2 = band * band;
+  int in = ctx->w->surface[i] > 0;
   struct neighbours it = *nb;
   for (long j; !in && neighbours_next(&it, &j);) {
-    if (e->w.surface[j] <= 0) continue;
+    if (ctx->w->surface[j] <= 0) continue;
     double r2 = 0;
     for (int d = 0; d < p->dim; d++) r2 += (p->x[d][i] - p->x[d][j]) * (p->x[d][i] - p->x[d][j]);
     in = r2 < band2;
   }
-  e->w.region[i] = in;
+  ctx->w->region[i] = in;
 }
 
-void pass_surface_band(struct engine *e) { pass_for_each_owned(e, band_of, NULL); }
+void pass_surface_band(struct pass_ctx *ctx) { pass_for_each_owned(ctx, band_of, NULL); }

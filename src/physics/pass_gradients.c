@@ -18,18 +18,18 @@
  * density gradient, read only by the density diffusion) so that the loops specialise. The arrays
  * are read through restrict pointers and the sums kept in locals. Returns 1 if the
  * renormalisation fell back to the identity. */
-static inline __attribute__((always_inline)) int gradients_of(struct engine *e, long i,
+static inline __attribute__((always_inline)) int gradients_of(struct pass_ctx *ctx, long i,
                                                               const struct neighbours *nb,
                                                               long *pairs, const int dim,
                                                               const int shift, const int multi,
                                                               const int renorm) {
-  const struct parts *p = &e->p;
+  const struct parts *p = ctx->p;
   const double *restrict x[3] = {p->x[0], p->x[1], p->x[2]}, *restrict v[3] = {p->v[0], p->v[1], p->v[2]};
-  const double *restrict vol = e->w.vol, *restrict rho = diffused_density(e);
+  const double *restrict vol = ctx->w->vol, *restrict rho = diffused_density(ctx);
   const int *restrict phase = p->phase;
   const int ph = phase[i];
-  const double support2 = e->kern.support2, rhoi = rho[i], *restrict rho_state = p->rho;
-  const int weighted = multi && e->c->interface_pressure == IFACE_P_DENSITY_WEIGHTED;
+  const double support2 = ctx->prm->kern.support2, rhoi = rho[i], *restrict rho_state = p->rho;
+  const int weighted = multi && ctx->c->interface_pressure == IFACE_P_DENSITY_WEIGHTED;
   double xi[3], vi[3], mt[9] = {0}, g[3] = {0}, sum_gw[3] = {0}, div = 0, out[3];
   for (int d = 0; d < dim; d++) {
     xi[d] = x[d][i];
@@ -45,7 +45,7 @@ static inline __attribute__((always_inline)) int gradients_of(struct engine *e, 
       dvdx += (v[d][j] - vi[d]) * dx[d];
     }
     if (r2 >= support2) continue;
-    double fv = kernel_f(&e->kern, r2) * vol[j];
+    double fv = kernel_f(&ctx->prm->kern, r2) * vol[j];
     if (weighted && phase[j] != ph && phase[j] != PHASE_WALL)
       div += fv * dvdx * 2.0 * rho_state[j] / (rho_state[i] + rho_state[j]);
     else
@@ -65,30 +65,30 @@ static inline __attribute__((always_inline)) int gradients_of(struct engine *e, 
   if (renorm) {
     double det = linalg_solve(dim, mt, g, out);
     fallback = !(fabs(det) >= RENORM_MIN_DET);
-    for (int d = 0; d < dim; d++) e->w.grad_rho[d][i] = fallback ? g[d] : out[d];
+    for (int d = 0; d < dim; d++) ctx->w->grad_rho[d][i] = fallback ? g[d] : out[d];
   }
-  e->w.div[i] = div;
-  if (shift) shifting_velocity(e, i, sum_gw, n_nb);
+  ctx->w->div[i] = div;
+  if (shift) shifting_velocity(ctx, i, sum_gw, n_nb);
   return fallback;
 }
 
-void pass_volumes(struct engine *e) {
-  const struct parts *p = &e->p;
-  for (long i = 0, n = p->n_owned + p->n_halo; i < n; i++) e->w.vol[i] = p->m[i] / p->rho[i];
+void pass_volumes(struct pass_ctx *ctx) {
+  const struct parts *p = ctx->p;
+  for (long i = 0, n = p->n_owned + p->n_halo; i < n; i++) ctx->w->vol[i] = p->m[i] / p->rho[i];
 }
 
 /* Zero the gradient-pass results of a wall ghost. */
-static void clear_ghost(struct engine *e, long i, const struct neighbours *nb) {
+static void clear_ghost(struct pass_ctx *ctx, long i, const struct neighbours *nb) {
   (void)nb;
-  for (int d = 0; d < e->p.dim; d++) {
-    if (e->w.grad_rho[d]) e->w.grad_rho[d][i] = 0;
-    if (e->w.du[d]) e->w.du[d][i] = 0;
+  for (int d = 0; d < ctx->p->dim; d++) {
+    if (ctx->w->grad_rho[d]) ctx->w->grad_rho[d][i] = 0;
+    if (ctx->w->du[d]) ctx->w->du[d][i] = 0;
   }
-  e->w.div[i] = 0;
+  ctx->w->div[i] = 0;
 }
 
 #define GRADIENTS_OF(D, S, M) \
-  (renorm ? gradients_of(e, i, nb, pairs, D, S, M, 1) : gradients_of(e, i, nb, pairs, D, S, M, 0))
+  (renorm ? gradients_of(ctx, i, nb, pairs, D, S, M, 1) : gradients_of(ctx, i, nb, pairs, D, S, M, 0))
 #ifdef MPSPH_SINGLE_PHASE   /* benchmark build: the multiphase specialisations compiled out */
 #define PHASED(D, S) GRADIENTS_OF(D, S, 0)
 #else
@@ -97,14 +97,14 @@ static void clear_ghost(struct engine *e, long i, const struct neighbours *nb) {
 
 /* The specialisation of gradients_of for the dimension, shifting, the number of phases and the
  * density gradient. */
-static void gradients(struct engine *e, long i, const struct neighbours *nb) {
-  long *pairs = &e->pass_pairs;
-  int shift = (e->features & FEAT_SHIFT) != 0, multi = e->c->n_phases > 1, fallback;
-  const int renorm = (e->features & FEAT_DIFFUSION) != 0;
+static void gradients(struct pass_ctx *ctx, long i, const struct neighbours *nb) {
+  long *pairs = &ctx->out.pairs;
+  int shift = (ctx->prm->features & FEAT_SHIFT) != 0, multi = ctx->c->n_phases > 1, fallback;
+  const int renorm = (ctx->prm->features & FEAT_DIFFUSION) != 0;
   (void)multi;
-  if (e->p.dim == 2) fallback = shift ? PHASED(2, 1) : PHASED(2, 0);
+  if (ctx->p->dim == 2) fallback = shift ? PHASED(2, 1) : PHASED(2, 0);
   else fallback = shift ? PHASED(3, 1) : PHASED(3, 0);
-  e->renorm_fallbacks += fallback;
+  ctx->out.renorm_fallbacks += fallback;
 }
 
-void pass_gradients(struct engine *e) { pass_for_each_owned(e, gradients, clear_ghost); }
+void pass_gradients(struct pass_ctx *ctx) { pass_for_each_owned(ctx, gradients, clear_ghost); }

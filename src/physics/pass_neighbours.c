@@ -1,29 +1,29 @@
 /* pass_neighbours.c — the loop over owned particles with their neighbour lists. */
 #include "physics/passes.h"
 
-void pass_for_each_owned(struct engine *e, particle_fn fluid, particle_fn wall) {
-  const struct space *s = &e->space;
-  const struct parts *p = &e->p;
+void pass_for_each_owned(struct pass_ctx *ctx, particle_fn fluid, particle_fn wall) {
+  const struct space *s = ctx->space;
+  const struct parts *p = ctx->p;
   for (long k = 0; k < s->n_owned_cells; k++) {
     long c = s->owned_cells[k], count = space_cell_size(s, c);
     if (!count) continue;
     long first = space_cell_first(s, c);
     struct neighbour_ranges r;
     neighbour_ranges(s, c, &r);
-    nlist_enter_cell(&e->nl, &r);
+    nlist_enter_cell(ctx->nl, &r);
     long f = 0;   /* fluid particles of the cell before slot i */
     for (long i = first; i < first + count; i++) {
       int is_wall = p->phase[i] == PHASE_WALL;
       particle_fn fn = is_wall ? wall : fluid;
       if (fn) {
-        struct neighbours nb = is_wall ? nlist_none() : nlist_of(&e->nl, k, f);
-        fn(e, i, &nb);
+        struct neighbours nb = is_wall ? nlist_none() : nlist_of(ctx->nl, k, f);
+        fn(ctx, i, &nb);
       }
       f += !is_wall;
     }
   }
 }
 
-void pass_neighbour_lists(struct engine *e) {
-  nlist_build(&e->nl, &e->space, &e->p, e->kern.support * ENGINE_CELL_SKIN);
+void pass_neighbour_lists(struct pass_ctx *ctx) {
+  nlist_build(ctx->nl, ctx->space, ctx->p, ctx->prm->list_radius);
 }

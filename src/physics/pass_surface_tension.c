@@ -21,18 +21,18 @@
 
 /* The colour gradient of owned fluid particle i, grad chi_i = sum_{j other phase} grad_i W_ij V_j
  * [1/m]. Returns the number of pairs within the support. */
-static long colour_gradient(const struct engine *e, long i, const struct neighbours *nb, double *grad_chi) {
-  const struct parts *p = &e->p;
+static long colour_gradient(const struct pass_ctx *ctx, long i, const struct neighbours *nb, double *grad_chi) {
+  const struct parts *p = ctx->p;
   const int dim = p->dim, ph = p->phase[i];
   long pairs = 0;
   for (int d = 0; d < dim; d++) grad_chi[d] = 0;
   struct neighbours it = *nb;
   for (long j; neighbours_next(&it, &j);) {
     double dx[3], r2 = pair_separation(p, dim, i, j, dx);
-    if (r2 >= e->kern.support2) continue;
+    if (r2 >= ctx->prm->kern.support2) continue;
     pairs++;
     if (p->phase[j] == ph || p->phase[j] == PHASE_WALL) continue;
-    double fv = kernel_f(&e->kern, r2) * e->w.vol[j];
+    double fv = kernel_f(&ctx->prm->kern, r2) * ctx->w->vol[j];
     for (int d = 0; d < dim; d++) grad_chi[d] += fv * dx[d];
   }
   return pairs;
@@ -60,34 +60,34 @@ static double renormalised_trace(int dim, const double *g, const double *b) {
 }
 
 /* Normal and |grad chi| of owned fluid particle i. */
-static void interface_normal_of(struct engine *e, long i, const struct neighbours *nb) {
-  const int dim = e->p.dim;
+static void interface_normal_of(struct pass_ctx *ctx, long i, const struct neighbours *nb) {
+  const int dim = ctx->p->dim;
   double grad_chi[3];
-  e->pass_pairs += colour_gradient(e, i, nb, grad_chi);
+  ctx->out.pairs += colour_gradient(ctx, i, nb, grad_chi);
   double g = norm_of(grad_chi, dim);
-  int on = g * e->h >= COLOUR_GRAD_MIN;
-  e->w.colour_grad[i] = on ? g : 0.0;
-  for (int d = 0; d < dim; d++) e->w.interface_normal[d][i] = on ? grad_chi[d] / g : 0.0;
+  int on = g * ctx->prm->h >= COLOUR_GRAD_MIN;
+  ctx->w->colour_grad[i] = on ? g : 0.0;
+  for (int d = 0; d < dim; d++) ctx->w->interface_normal[d][i] = on ? grad_chi[d] / g : 0.0;
 }
 
 /* Wall ghosts carry no interface normal. */
-static void clear_ghost(struct engine *e, long i, const struct neighbours *nb) {
+static void clear_ghost(struct pass_ctx *ctx, long i, const struct neighbours *nb) {
   (void)nb;
-  e->w.colour_grad[i] = 0;
-  e->w.kappa_curvature[i] = 0;
-  for (int d = 0; d < e->p.dim; d++) e->w.interface_normal[d][i] = 0;
+  ctx->w->colour_grad[i] = 0;
+  ctx->w->kappa_curvature[i] = 0;
+  for (int d = 0; d < ctx->p->dim; d++) ctx->w->interface_normal[d][i] = 0;
 }
 
-void pass_interface_normals(struct engine *e) { pass_for_each_owned(e, interface_normal_of, clear_ghost); }
+void pass_interface_normals(struct pass_ctx *ctx) { pass_for_each_owned(ctx, interface_normal_of, clear_ghost); }
 
 /* Curvature div n of owned fluid particle i with a normal [1/m]: with the gradient sums
  * G = sum_j (phi_ij n_j - n_i) (x) grad_i W_ij V_j and B = sum_j r_ji (x) grad_i W_ij V_j over the
  * neighbours that have a normal, div n = trace(G B^-1) (exact for a linear normal field, however
  * one-sided the neighbours), or dim trace(G) / trace(B) where det B < CURVATURE_MIN_DET.
  * Counts the pairs into *pairs. */
-static double curvature_of(const struct engine *e, long i, const struct neighbours *nb, long *pairs) {
-  const struct parts *p = &e->p;
-  double *const *nrm = e->w.interface_normal;
+static double curvature_of(const struct pass_ctx *ctx, long i, const struct neighbours *nb, long *pairs) {
+  const struct parts *p = ctx->p;
+  double *const *nrm = ctx->w->interface_normal;
   const int dim = p->dim, ph = p->phase[i];
   double g[9] = {0}, b[9] = {0};   /* row-major dim x dim */
   struct neighbours it = *nb;
@@ -95,9 +95,9 @@ static double curvature_of(const struct engine *e, long i, const struct neighbou
     if (p->phase[j] == PHASE_WALL) continue;
     double dx[3], r2 = pair_separation(p, dim, i, j, dx), phi = p->phase[j] == ph ? 1.0 : -1.0, nj2 = 0;
     for (int d = 0; d < dim; d++) nj2 += nrm[d][j] * nrm[d][j];
-    if (r2 >= e->kern.support2 || nj2 == 0) continue;
+    if (r2 >= ctx->prm->kern.support2 || nj2 == 0) continue;
     (*pairs)++;
-    double fv = kernel_f(&e->kern, r2) * e->w.vol[j];
+    double fv = kernel_f(&ctx->prm->kern, r2) * ctx->w->vol[j];
     for (int a = 0; a < dim; a++)
       for (int c = 0; c < dim; c++) {
         g[a * dim + c] += (phi * nrm[a][j] - nrm[a][i]) * fv * dx[c];
@@ -108,12 +108,18 @@ static double curvature_of(const struct engine *e, long i, const struct neighbou
 }
 
 /* Curvature and CSF acceleration of owned fluid particle i. */
-static void surface_tension_of(struct engine *e, long i, const struct neighbours *nb) {
-  struct work *w = &e->w;
-  double kappa = w->colour_grad[i] > 0 ? curvature_of(e, i, nb, &e->pass_pairs) : 0.0;
-  double a = -e->c->surface_tension * kappa * w->colour_grad[i] / e->p.rho[i];
+static void surface_tension_of(struct pass_ctx *ctx, long i, const struct neighbours *nb) {
+  struct work *w = ctx->w;
+  double kappa = w->colour_grad[i] > 0 ? curvature_of(ctx, i, nb, &ctx->out.pairs) : 0.0;
+  double a = -ctx->c->surface_tension * kappa * w->colour_grad[i] / ctx->p->rho[i];
   w->kappa_curvature[i] = kappa;
-  for (int d = 0; d < e->p.dim; d++) w->dv[d][i] += a * w->interface_normal[d][i];
+  for (int d = 0; d < ctx->p->dim; d++) w->dv[d][i] += a * w->interface_normal[d][i];
 }
 
-void pass_surface_tension(struct engine *e) { pass_for_each_owned(e, surface_tension_of, NULL); }
+void pass_surface_tension(struct pass_ctx *ctx) { pass_for_each_owned(ctx, surface_tension_of, NULL); }
+
+double capillary_dt(const struct case_def *c, double h) {
+  double rho_min = INFINITY;
+  for (int ph = 0; ph < c->n_phases; ph++) rho_min = fmin(rho_min, c->phases[ph].rho0);
+  return 0.25 * sqrt(rho_min * h * h * h / (2.0 * 3.14159265358979323846 * c->surface_tension));
+}

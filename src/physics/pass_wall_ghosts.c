@@ -11,19 +11,19 @@
 #include <string.h>
 #include "physics/passes.h"
 
-long visit_near(const struct engine *e, const double *xs, int with_walls, near_fn fn, void *ctx) {
-  const struct parts *p = &e->p;
+long visit_near(const struct pass_ctx *ctx, const double *xs, int with_walls, near_fn fn, void *arg) {
+  const struct parts *p = ctx->p;
   struct neighbour_ranges r;
   int dim = p->dim;
   long n = 0;
-  neighbour_ranges(&e->space, grid_cell_clamped(&e->space.grid, xs), &r);
+  neighbour_ranges(ctx->space, grid_cell_clamped(&ctx->space->grid, xs), &r);
   for (int k = 0; k < r.n; k++)
     for (long j = r.start[k]; j < r.start[k] + r.count[k]; j++) {
       if (p->phase[j] == PHASE_WALL && !with_walls) continue;
       double r2 = 0;
       for (int d = 0; d < dim; d++) r2 += (xs[d] - p->x[d][j]) * (xs[d] - p->x[d][j]);
-      if (r2 >= e->kern.support2) continue;
-      fn(ctx, e, j, kernel_w(&e->kern, r2) * p->m[j] / p->rho[j]);
+      if (r2 >= ctx->prm->kern.support2) continue;
+      fn(arg, ctx, j, kernel_w(&ctx->prm->kern, r2) * p->m[j] / p->rho[j]);
       n++;
     }
   return n;
@@ -37,88 +37,89 @@ static void add_values(double *a, const struct parts *p, long j, double wv) {
   for (int d = 0; d < p->dim; d++) a[SHEPARD_U + d] += wv * p->v[d][j];
 }
 
-/* Add fluid slot j with weight wv to the Shepard sums ctx: all phases and its own. */
-static void add_shepard(void *ctx, const struct engine *e, long j, double wv) {
-  struct shepard *s = ctx;
-  double *own = s->phase[e->p.phase[j]];
-  add_values(s->all, &e->p, j, wv);
-  add_values(own, &e->p, j, wv);
-  for (int d = 0; s->with_rho_r && d < e->p.dim; d++) own[SHEPARD_RHO_R + d] += wv * e->p.rho[j] * e->p.x[d][j];
+/* Add fluid slot j with weight wv to the Shepard sums arg: all phases and its own. */
+static void add_shepard(void *arg, const struct pass_ctx *ctx, long j, double wv) {
+  struct shepard *s = arg;
+  const struct parts *p = ctx->p;
+  double *own = s->phase[p->phase[j]];
+  add_values(s->all, p, j, wv);
+  add_values(own, p, j, wv);
+  for (int d = 0; s->with_rho_r && d < p->dim; d++) own[SHEPARD_RHO_R + d] += wv * p->rho[j] * p->x[d][j];
 }
 
-void shepard_at(const struct engine *e, const double *xs, struct shepard *s, long *pairs) {
+void shepard_at(const struct pass_ctx *ctx, const double *xs, struct shepard *s, long *pairs) {
   memset(s, 0, sizeof(*s));
-  s->with_rho_r = e->c->interface_pressure == IFACE_P_DENSITY_WEIGHTED && e->c->n_phases > 1;
-  *pairs += visit_near(e, xs, 0, add_shepard, s);
+  s->with_rho_r = ctx->c->interface_pressure == IFACE_P_DENSITY_WEIGHTED && ctx->c->n_phases > 1;
+  *pairs += visit_near(ctx, xs, 0, add_shepard, s);
 }
 
-static int majority_phase(const struct engine *e, const struct shepard *s) {
+static int majority_phase(const struct pass_ctx *ctx, const struct shepard *s) {
   int best = 0;
-  for (int ph = 1; ph < e->c->n_phases; ph++)
+  for (int ph = 1; ph < ctx->c->n_phases; ph++)
     if (s->phase[ph][SHEPARD_W] > s->phase[best][SHEPARD_W]) best = ph;
   return best;
 }
 
 /* Velocity [m/s] and acceleration [m/s^2] of wall w at point x (zero for a fixed wall). */
-static void wall_kinematics(const struct engine *e, int w, const double *x, double *u, double *a) {
-  int dim = e->p.dim;
+static void wall_kinematics(const struct pass_ctx *ctx, int w, const double *x, double *u, double *a) {
+  int dim = ctx->p->dim;
   for (int d = 0; d < 3; d++) u[d] = a[d] = 0;
-  if (!e->c->walls[w].moving) return;
-  frame_velocity(&e->frames[w], dim, x, u);
-  frame_acceleration(&e->frames[w], dim, x, a);
+  if (!ctx->c->walls[w].moving) return;
+  frame_velocity(&ctx->prm->frames[w], dim, x, u);
+  frame_acceleration(&ctx->prm->frames[w], dim, x, a);
 }
 
 /* Pressure [Pa] of ghost k from the Shepard sums src at its mirror point xs, with the hydrostatic
  * and inertial correction for the body acceleration g - a_w (aw the wall's acceleration): from the
  * mirror point with the mean density (mixed phases), or from each neighbour with its own density
  * (one phase: exact for a hydrostatic field whatever part of the support is filled). */
-static double ghost_pressure(const struct engine *e, long k, const double *xs, const double *src,
+static double ghost_pressure(const struct pass_ctx *ctx, long k, const double *xs, const double *src,
                              const double *aw, int per_neighbour) {
   double pressure = src[SHEPARD_P] / src[SHEPARD_W], rho_star = src[SHEPARD_RHO] / src[SHEPARD_W];
-  for (int d = 0; d < e->p.dim; d++) {
-    double acc = e->c->gravity[d] - aw[d];
-    pressure += per_neighbour ? acc * (e->p.x[d][k] * rho_star - src[SHEPARD_RHO_R + d] / src[SHEPARD_W])
-                              : rho_star * acc * (e->p.x[d][k] - xs[d]);
+  for (int d = 0; d < ctx->p->dim; d++) {
+    double acc = ctx->c->gravity[d] - aw[d];
+    pressure += per_neighbour ? acc * (ctx->p->x[d][k] * rho_star - src[SHEPARD_RHO_R + d] / src[SHEPARD_W])
+                              : rho_star * acc * (ctx->p->x[d][k] - xs[d]);
   }
   return pressure;
 }
 
 /* Set ghost k from the Shepard sums at its mirror point xs: pressure with the hydrostatic and
  * inertial correction, velocity mirrored relative to the wall's. */
-static void ghost_from_shepard(struct engine *e, long k, const double *xs, const struct shepard *s) {
-  struct parts *p = &e->p;
+static void ghost_from_shepard(struct pass_ctx *ctx, long k, const double *xs, const struct shepard *s) {
+  struct parts *p = ctx->p;
   int dim = p->dim, w = p->wall[k];
   double u[3] = {0, 0, 0}, n[3], nn = 0, un = 0, pressure = 0, mid[3] = {0, 0, 0}, uw[3], aw[3];
   for (int d = 0; d < dim; d++) mid[d] = 0.5 * (xs[d] + p->x[d][k]);
-  wall_kinematics(e, w, mid, uw, aw);
+  wall_kinematics(ctx, w, mid, uw, aw);
   /* the sums the ghost takes its values from: with the density-weighted interface pressure its
    * majority phase's only (the ghost stands for that phase, theory section 4); with the paper's
    * pair sum every phase's (Marrone et al. 2011: a ghost beside a water particle in air carries
    * part of its pressure) */
-  int ph = majority_phase(e, s);
-  const double *src = e->c->interface_pressure == IFACE_P_DENSITY_WEIGHTED ? s->phase[ph] : s->all;
+  int ph = majority_phase(ctx, s);
+  const double *src = ctx->c->interface_pressure == IFACE_P_DENSITY_WEIGHTED ? s->phase[ph] : s->all;
   if (src[SHEPARD_W] > 0) {
     for (int d = 0; d < dim; d++) u[d] = src[SHEPARD_U + d] / src[SHEPARD_W];
-    pressure = ghost_pressure(e, k, xs, src, aw, s->with_rho_r);
+    pressure = ghost_pressure(ctx, k, xs, src, aw, s->with_rho_r);
   }
   for (int d = 0; d < dim; d++) {
     n[d] = xs[d] - p->x[d][k];
     nn += n[d] * n[d];
   }
   for (int d = 0; d < dim; d++) un += nn > 0 ? (u[d] - uw[d]) * n[d] / nn : 0.0;
-  int no_slip = e->c->walls[w].slip == SLIP_NO;
+  int no_slip = ctx->c->walls[w].slip == SLIP_NO;
   for (int d = 0; d < dim; d++) p->v[d][k] = no_slip ? 2.0 * uw[d] - u[d] : u[d] - 2.0 * un * n[d];
   p->p[k] = pressure;
-  p->rho[k] = e->c->phases[ph].rho0;
-  p->m[k] = p->rho[k] * e->vol0;
+  p->rho[k] = ctx->c->phases[ph].rho0;
+  p->m[k] = p->rho[k] * ctx->prm->vol0;
 }
 
-void wall_mirror_point(const struct engine *e, long k, double *xs) {
-  const struct parts *p = &e->p;
+void wall_mirror_point(const struct pass_ctx *ctx, long k, double *xs) {
+  const struct parts *p = ctx->p;
   double off[3] = {0, 0, 0};
   for (int d = 0; d < p->dim; d++) off[d] = p->mirror[d][k];
-  if (e->c->walls[p->wall[k]].moving) {   /* the body-frame offset turned with the wall */
-    double c = cos(e->frames[p->wall[k]].theta), s = sin(e->frames[p->wall[k]].theta);
+  if (ctx->c->walls[p->wall[k]].moving) {   /* the body-frame offset turned with the wall */
+    double c = cos(ctx->prm->frames[p->wall[k]].theta), s = sin(ctx->prm->frames[p->wall[k]].theta);
     double ox = off[0];
     off[0] = c * ox - s * off[1];
     off[1] = s * ox + c * off[1];
@@ -126,16 +127,16 @@ void wall_mirror_point(const struct engine *e, long k, double *xs) {
   for (int d = 0; d < 3; d++) xs[d] = d < p->dim ? p->x[d][k] + off[d] : 0.0;
 }
 
-void pass_wall_ghosts(struct engine *e) {
-  struct parts *p = &e->p;
+void pass_wall_ghosts(struct pass_ctx *ctx) {
+  struct parts *p = ctx->p;
   long pairs = 0;
   for (long k = 0; k < p->n_owned; k++) {
     if (p->phase[k] != PHASE_WALL) continue;
     double xs[3];
-    wall_mirror_point(e, k, xs);
+    wall_mirror_point(ctx, k, xs);
     struct shepard s;
-    shepard_at(e, xs, &s, &pairs);
-    ghost_from_shepard(e, k, xs, &s);
+    shepard_at(ctx, xs, &s, &pairs);
+    ghost_from_shepard(ctx, k, xs, &s);
   }
-  e->pass_pairs += pairs;
+  ctx->out.pairs += pairs;
 }

@@ -10,21 +10,21 @@
 #define ISOLATED_NEIGHBOURS 5
 #define ISOLATED_LAMBDA 0.2
 
-void shifting_velocity(struct engine *e, long i, const double *sum_gradw, int n_neighbours) {
-  const struct case_def *c = e->c;
-  const int dim = e->p.dim;
+void shifting_velocity(const struct pass_ctx *ctx, long i, const double *sum_gradw, int n_neighbours) {
+  const struct case_def *c = ctx->c;
+  const int dim = ctx->p->dim;
   const double u_max = c->u_max, limit = 0.5 * u_max;
   double du[3] = {0, 0, 0}, norm2 = 0;
-  int in_region = e->w.region && e->w.region[i] > 0;
-  int isolated = n_neighbours < ISOLATED_NEIGHBOURS || (in_region && e->w.lambda[i] < ISOLATED_LAMBDA);
-  for (int d = 0; d < dim && !isolated; d++) du[d] = -2.0 * e->h * u_max * sum_gradw[d];
+  int in_region = ctx->w->region && ctx->w->region[i] > 0;
+  int isolated = n_neighbours < ISOLATED_NEIGHBOURS || (in_region && ctx->w->lambda[i] < ISOLATED_LAMBDA);
+  for (int d = 0; d < dim && !isolated; d++) du[d] = -2.0 * ctx->prm->h * u_max * sum_gradw[d];
   if (in_region && !isolated) {
     double dn = 0;
-    for (int d = 0; d < dim; d++) dn += du[d] * e->w.normal[d][i];
-    for (int d = 0; d < dim; d++) du[d] -= dn * e->w.normal[d][i];
+    for (int d = 0; d < dim; d++) dn += du[d] * ctx->w->normal[d][i];
+    for (int d = 0; d < dim; d++) du[d] -= dn * ctx->w->normal[d][i];
   }
   for (int d = 0; d < dim; d++) norm2 += du[d] * du[d];
   double scale = 1.0;
   if (norm2 >= limit * limit && (!in_region || c->limit_surface_shifting)) scale = limit / sqrt(norm2);
-  for (int d = 0; d < dim; d++) e->w.du[d][i] = scale * du[d];
+  for (int d = 0; d < dim; d++) ctx->w->du[d][i] = scale * du[d];
 }

@@ -10,12 +10,12 @@
 #include "physics/passes.h"
 
 /* Shepard density of owned fluid particle i and its pressure. */
-static void shepard_density(struct engine *e, long i, const struct neighbours *nb) {
-  const struct parts *p = &e->p;
-  const double *restrict vol = e->w.vol, *restrict m = p->m;
+static void shepard_density(struct pass_ctx *ctx, long i, const struct neighbours *nb) {
+  const struct parts *p = ctx->p;
+  const double *restrict vol = ctx->w->vol, *restrict m = p->m;
   const int *restrict phase = p->phase;
   const int ph = phase[i], dim = p->dim;
-  const double w0 = kernel_w(&e->kern, 0.0), support2 = e->kern.support2;
+  const double w0 = kernel_w(&ctx->prm->kern, 0.0), support2 = ctx->prm->kern.support2;
   double mass_sum = m[i] * w0, vol_sum = vol[i] * w0;
   long pairs = 0;
   struct neighbours it = *nb;
@@ -23,14 +23,14 @@ static void shepard_density(struct engine *e, long i, const struct neighbours *n
     if (phase[j] != ph) continue;
     double dx[3], r2 = pair_separation(p, dim, i, j, dx);
     if (r2 >= support2) continue;
-    double w = kernel_w(&e->kern, r2);
+    double w = kernel_w(&ctx->prm->kern, r2);
     mass_sum += m[j] * w;
     vol_sum += vol[j] * w;
     pairs++;
   }
-  e->w.rho_s[i] = mass_sum / vol_sum;
-  e->p.p[i] = eos_pressure(&e->c->phases[ph], e->w.rho_s[i]);
-  e->pass_pairs += pairs;
+  ctx->w->rho_s[i] = mass_sum / vol_sum;
+  ctx->p->p[i] = eos_pressure(&ctx->c->phases[ph], ctx->w->rho_s[i]);
+  ctx->out.pairs += pairs;
 }
 
-void pass_shepard_density(struct engine *e) { pass_for_each_owned(e, shepard_density, NULL); }
+void pass_shepard_density(struct pass_ctx *ctx) { pass_for_each_owned(ctx, shepard_density, NULL); }

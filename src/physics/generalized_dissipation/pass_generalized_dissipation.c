@@ -23,76 +23,76 @@
 #define GD_MIN_DET 0.1   /* det of L^-1 below which the gradient correction is dropped */
 
 /* The sound speed of pair (i, j): the larger c0 of the two phases, c0_i beside a ghost [m/s]. */
-static double pair_sound_speed(const struct engine *e, int phi, int phj) {
-  double ci = e->c->phases[phi].c0;
-  return phj == PHASE_WALL ? ci : fmax(ci, e->c->phases[phj].c0);
+static double pair_sound_speed(const struct pass_ctx *ctx, int phi, int phj) {
+  double ci = ctx->c->phases[phi].c0;
+  return phj == PHASE_WALL ? ci : fmax(ci, ctx->c->phases[phj].c0);
 }
 
 /* Gamma_i and the renormalised pressure gradient of owned fluid particle i. */
-static void gd_gradients(struct engine *e, long i, const struct neighbours *nb) {
-  const struct parts *p = &e->p;
-  const double *restrict vol = e->w.vol, *restrict pres = p->p;
+static void gd_gradients(struct pass_ctx *ctx, long i, const struct neighbours *nb) {
+  const struct parts *p = ctx->p;
+  const double *restrict vol = ctx->w->vol, *restrict pres = p->p;
   const int dim = p->dim;
-  double gamma = kernel_w(&e->kern, 0.0) * vol[i], mt[9] = {0}, g[3] = {0}, out[3];
+  double gamma = kernel_w(&ctx->prm->kern, 0.0) * vol[i], mt[9] = {0}, g[3] = {0}, out[3];
   struct neighbours it = *nb;
   for (long j; neighbours_next(&it, &j);) {
     double dx[3], r2 = pair_separation(p, dim, i, j, dx);
-    if (r2 >= e->kern.support2) continue;
-    double fv = kernel_f(&e->kern, r2) * vol[j];
-    gamma += kernel_w(&e->kern, r2) * vol[j];
+    if (r2 >= ctx->prm->kern.support2) continue;
+    double fv = kernel_f(&ctx->prm->kern, r2) * vol[j];
+    gamma += kernel_w(&ctx->prm->kern, r2) * vol[j];
     for (int a = 0; a < dim; a++) {
       g[a] += (pres[j] - pres[i]) * fv * dx[a];
       for (int b = 0; b < dim; b++) mt[a * dim + b] -= fv * dx[a] * dx[b];
     }
-    e->pass_pairs++;
+    ctx->out.pairs++;
   }
   double det = linalg_solve(dim, mt, g, out);
   int fallback = !(fabs(det) >= GD_MIN_DET);
-  for (int d = 0; d < dim; d++) e->w.gd_grad_p[d][i] = fallback ? 0.0 : out[d];
-  e->w.gd_gamma[i] = gamma;
-  e->renorm_fallbacks += fallback;
+  for (int d = 0; d < dim; d++) ctx->w->gd_grad_p[d][i] = fallback ? 0.0 : out[d];
+  ctx->w->gd_gamma[i] = gamma;
+  ctx->out.renorm_fallbacks += fallback;
 }
 
 /* Wall ghosts: Gamma = 1 (paper 004, Eq. 9) and no gradient of their own. */
-static void gd_ghost(struct engine *e, long i, const struct neighbours *nb) {
+static void gd_ghost(struct pass_ctx *ctx, long i, const struct neighbours *nb) {
   (void)nb;
-  e->w.gd_gamma[i] = 1.0;
-  for (int d = 0; d < e->p.dim; d++) e->w.gd_grad_p[d][i] = 0.0;
+  ctx->w->gd_gamma[i] = 1.0;
+  for (int d = 0; d < ctx->p->dim; d++) ctx->w->gd_grad_p[d][i] = 0.0;
 }
 
-void pass_gd_gradients(struct engine *e) { pass_for_each_owned(e, gd_gradients, gd_ghost); }
+void pass_gd_gradients(struct pass_ctx *ctx) { pass_for_each_owned(ctx, gd_gradients, gd_ghost); }
 
 /* The dissipation pair term of (i, j) without the kernel factor F_ij V_j: the bracket of the
  * consistent (Eq. 46 corrected) or the printed (Eq. 49) form times its coefficient [kg/m^3/s
  * per unit F V]. dx = r_i - r_j, r2 = |dx|^2. */
-static double dissipation_pair(const struct engine *e, long i, long j, const double *dx, double r2) {
-  const struct parts *p = &e->p;
+static double dissipation_pair(const struct pass_ctx *ctx, long i, long j, const double *dx, double r2) {
+  const struct parts *p = ctx->p;
   const int dim = p->dim, wall = p->phase[j] == PHASE_WALL;
   double vcf = 2.0 * p->rho[i] / (p->rho[i] + p->rho[j]);
-  double k = vcf / pair_sound_speed(e, p->phase[i], p->phase[j]), corr = 0.0;
+  double k = vcf / pair_sound_speed(ctx, p->phase[i], p->phase[j]), corr = 0.0;
   for (int d = 0; d < dim; d++) {
-    double gi = e->w.gd_grad_p[d][i], gj = wall ? gi : e->w.gd_grad_p[d][j];
-    corr += (e->c->dissipation_form == DISSIPATION_PRINTED ? -(gj - gi) : gi + gj) * 0.5 * dx[d];
+    double gi = ctx->w->gd_grad_p[d][i], gj = wall ? gi : ctx->w->gd_grad_p[d][j];
+    corr += (ctx->c->dissipation_form == DISSIPATION_PRINTED ? -(gj - gi) : gi + gj) * 0.5 * dx[d];
   }
   double bracket = p->p[j] - p->p[i] + corr;
-  if (e->c->dissipation_form == DISSIPATION_PRINTED) return -e->c->delta * k * bracket * r2;
-  return -2.0 * e->c->delta * e->h * k * bracket;
+  if (ctx->c->dissipation_form == DISSIPATION_PRINTED) return -ctx->c->delta * k * bracket * r2;
+  return -2.0 * ctx->c->delta * ctx->prm->h * k * bracket;
 }
 
 /* Both right-hand sides of owned fluid particle i. */
-static void gd_rhs(struct engine *e, long i, const struct neighbours *nb) {
-  const struct parts *p = &e->p;
-  const double *restrict vol = e->w.vol, *restrict pres = p->p, *restrict gam = e->w.gd_gamma;
+static void gd_rhs(struct pass_ctx *ctx, long i, const struct neighbours *nb) {
+  const struct parts *p = ctx->p;
+  const double *restrict vol = ctx->w->vol, *restrict pres = p->p, *restrict gam = ctx->w->gd_gamma;
   const int dim = p->dim, ph = p->phase[i];
   double mu[CASE_MAX_PHASES];   /* mu of each phase, walls taking the phase of i */
-  for (int k = 0; k < e->c->n_phases; k++) mu[k] = phase_viscosity_total(e, k);
-  const double eta2 = 0.01 * e->h * e->h, mui = mu[ph], pgi = pres[i] / gam[i];
+  for (int k = 0; k < ctx->c->n_phases; k++) mu[k] = phase_viscosity_total(ctx, k);
+  const double eta2 = 0.01 * ctx->prm->h * ctx->prm->h, mui = mu[ph], pgi = pres[i] / gam[i];
   double div = 0, diss = 0, force[3] = {0, 0, 0}, g[3];
   struct neighbours it = *nb;
   for (long j; neighbours_next(&it, &j);) {
     double dx[3], r2 = pair_separation(p, dim, i, j, dx), dvdx = 0;
-    if (r2 >= e->kern.support2) continue;
-    double fv = kernel_f(&e->kern, r2) * vol[j];
+    if (r2 >= ctx->prm->kern.support2) continue;
+    double fv = kernel_f(&ctx->prm->kern, r2) * vol[j];
     double muj = p->phase[j] == PHASE_WALL ? mui : mu[p->phase[j]];
     double mu_ij = 2.0 * harmonic_mean(mui, muj);
     double visc = mu_ij * fv * r2 / (r2 + eta2), pg = pgi + pres[j] / gam[j];
@@ -101,15 +101,15 @@ static void gd_rhs(struct engine *e, long i, const struct neighbours *nb) {
       force[d] += -pg * fv * dx[d] - visc * (p->v[d][j] - p->v[d][i]);
     }
     div += fv * dvdx;
-    diss += dissipation_pair(e, i, j, dx, r2) * fv;
-    e->pass_pairs++;
+    diss += dissipation_pair(ctx, i, j, dx, r2) * fv;
+    ctx->out.pairs++;
   }
-  body_acceleration(e, i, g);
-  e->w.drho[i] = -p->rho[i] * div + diss;
-  for (int d = 0; d < dim; d++) e->w.dv[d][i] = force[d] / p->rho[i] + g[d];
+  body_acceleration(ctx, i, g);
+  ctx->w->drho[i] = -p->rho[i] * div + diss;
+  for (int d = 0; d < dim; d++) ctx->w->dv[d][i] = force[d] / p->rho[i] + g[d];
 }
 
-void pass_gd_rhs(struct engine *e) { pass_for_each_owned(e, gd_rhs, NULL); }
+void pass_gd_rhs(struct pass_ctx *ctx) { pass_for_each_owned(ctx, gd_rhs, NULL); }
 
 /* Lower *dt to candidate if smaller, naming the limit. */
 static void lower(double *dt, const char **limit, double candidate, const char *name) {
@@ -119,18 +119,18 @@ static void lower(double *dt, const char **limit, double candidate, const char *
   }
 }
 
-double gd_time_step(const struct engine *e, double a_max, double u_max, const char **limit) {
-  const struct case_def *c = e->c;
-  double dt = c->cfl * e->h / (e->c_max + u_max), g = 0;
+double gd_time_step(const struct pass_ctx *ctx, double a_max, double u_max, const char **limit) {
+  const struct case_def *c = ctx->c;
+  double dt = c->cfl * ctx->prm->h / (ctx->prm->c_max + u_max), g = 0;
   *limit = "acoustic";
-  for (int d = 0; d < e->p.dim; d++) g += c->gravity[d] * c->gravity[d];
+  for (int d = 0; d < ctx->p->dim; d++) g += c->gravity[d] * c->gravity[d];
   double a = fmax(sqrt(g), a_max);
-  if (a > 0) lower(&dt, limit, 0.25 * sqrt(e->h / a), "acceleration");
+  if (a > 0) lower(&dt, limit, 0.25 * sqrt(ctx->prm->h / a), "acceleration");
   for (int ph = 0; ph < c->n_phases; ph++) {
-    double mu = phase_viscosity_total(e, ph);
-    if (mu > 0) lower(&dt, limit, 0.125 * c->phases[ph].rho0 * e->h * e->h / mu, "viscous");
+    double mu = phase_viscosity_total(ctx, ph);
+    if (mu > 0) lower(&dt, limit, 0.125 * c->phases[ph].rho0 * ctx->prm->h * ctx->prm->h / mu, "viscous");
   }
-  if (e->features & FEAT_SURFACE_TENSION)   /* twice the limit of paper 000's RK4 step (the exact 0.5 (...)^1/2) */
-    lower(&dt, limit, 2.0 * engine_capillary_dt(e), "capillary");
+  if (ctx->prm->features & FEAT_SURFACE_TENSION)   /* twice the limit of paper 000's RK4 step (the exact 0.5 (...)^1/2) */
+    lower(&dt, limit, 2.0 * capillary_dt(c, ctx->prm->h), "capillary");
   return dt;
 }

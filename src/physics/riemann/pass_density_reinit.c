@@ -36,24 +36,24 @@ int riemann_light_phase(const struct case_def *c, int ph) {
 }
 
 /* Re-initialised density and pressure of fluid particle i. */
-static void reinit_of(struct engine *e, long i, const struct neighbours *nb) {
-  struct parts *p = &e->p;
-  const int ph = p->phase[i], light = riemann_light_phase(e->c, ph);
-  const struct phase *f = &e->c->phases[ph];
-  double sum = kernel_w(&e->kern, 0.0);
+static void reinit_of(struct pass_ctx *ctx, long i, const struct neighbours *nb) {
+  struct parts *p = ctx->p;
+  const int ph = p->phase[i], light = riemann_light_phase(ctx->c, ph);
+  const struct phase *f = &ctx->c->phases[ph];
+  double sum = kernel_w(&ctx->prm->kern, 0.0);
   long n = 0;
   struct neighbours it = *nb;
   for (long j; neighbours_next(&it, &j);) {
     if (!light && p->phase[j] != PHASE_WALL && p->phase[j] != ph) continue;
     double dx[3], r2 = pair_separation(p, p->dim, i, j, dx);
-    if (r2 >= e->kern.support2) continue;
-    sum += kernel_w(&e->kern, r2);
+    if (r2 >= ctx->prm->kern.support2) continue;
+    sum += kernel_w(&ctx->prm->kern, r2);
     n++;
   }
-  double rho_sum = f->rho0 * sum / e->lattice_w_sum, rho = p->rho[i];
+  double rho_sum = f->rho0 * sum / ctx->prm->lattice_w_sum, rho = p->rho[i];
   p->rho[i] = light ? rho_sum : rho_sum + fmax(0.0, rho - rho_sum) * f->rho0 / rho;
   p->p[i] = eos_pressure(f, p->rho[i]);
-  e->pass_pairs += n;
+  ctx->out.pairs += n;
 }
 
-void pass_density_reinit(struct engine *e) { pass_for_each_owned(e, reinit_of, NULL); }
+void pass_density_reinit(struct pass_ctx *ctx) { pass_for_each_owned(ctx, reinit_of, NULL); }

@@ -26,32 +26,32 @@ struct rcentre {
 };
 
 /* The dummy pressure [Pa] and velocity vj [m/s] of wall ghost j for particle i, dx = r_i - r_j. */
-static inline double wall_dummy(const struct engine *e, const struct rcentre *ci, long j, const double *dx,
+static inline double wall_dummy(const struct pass_ctx *ctx, const struct rcentre *ci, long j, const double *dx,
                                 double *vj, const int dim) {
-  const struct parts *p = &e->p;
+  const struct parts *p = ctx->p;
   double head = 0, n2 = 0, vn = 0;
   for (int d = 0; d < dim; d++) {
     head -= ci->a[d] * dx[d];
     n2 += p->mirror[d][j] * p->mirror[d][j];
     vn += ci->v[d] * p->mirror[d][j];
   }
-  int no_slip = e->c->walls[p->wall[j]].slip == SLIP_NO;
+  int no_slip = ctx->c->walls[p->wall[j]].slip == SLIP_NO;
   for (int d = 0; d < dim; d++) vj[d] = no_slip ? -ci->v[d] : ci->v[d] - 2.0 * vn * p->mirror[d][j] / n2;
   return ci->p + ci->rho * fmax(0.0, head);
 }
 
 /* The Riemann sums of i: the momentum sums (pressure, viscous) when MOMENTUM, else the continuity
  * sum; dim is a compile-time constant of each specialisation. */
-static inline __attribute__((always_inline)) void riemann_sums(const struct engine *e, const struct rcentre *ci,
+static inline __attribute__((always_inline)) void riemann_sums(const struct pass_ctx *ctx, const struct rcentre *ci,
                                                                const struct neighbours *nb, double *grad_p,
                                                                double *visc, double *drho, long *pairs,
                                                                const int dim, const int MOMENTUM) {
-  const struct parts *p = &e->p;
-  const struct phase *phases = e->c->phases;
+  const struct parts *p = ctx->p;
+  const struct phase *phases = ctx->c->phases;
   const double *restrict x[3] = {p->x[0], p->x[1], p->x[2]}, *restrict v[3] = {p->v[0], p->v[1], p->v[2]};
-  const double *restrict rho = p->rho, *restrict pres = p->p, *restrict vol = e->w.vol;
+  const double *restrict rho = p->rho, *restrict pres = p->p, *restrict vol = ctx->w->vol;
   const int *restrict phase = p->phase;
-  const double support2 = e->kern.support2;
+  const double support2 = ctx->prm->kern.support2;
   double gp[3] = {0, 0, 0}, vs[3] = {0, 0, 0}, dr = 0;
   long n = 0;
   struct neighbours it = *nb;
@@ -66,7 +66,7 @@ static inline __attribute__((always_inline)) void riemann_sums(const struct engi
     const int wall = phase[j] == PHASE_WALL;
     double pj = pres[j], rhoj = rho[j], cj, etaj;
     if (wall) {
-      pj = wall_dummy(e, ci, j, dx, vj, dim);
+      pj = wall_dummy(ctx, ci, j, dx, vj, dim);
       rhoj = eos_density(&phases[ci->phase], pj);
       cj = ci->c;
       etaj = ci->eta;
@@ -76,7 +76,7 @@ static inline __attribute__((always_inline)) void riemann_sums(const struct engi
       etaj = phases[phase[j]].viscosity;
     }
     for (int d = 0; d < dim; d++) vdx += (ci->v[d] - vj[d]) * dx[d];
-    const double fv = kernel_f(&e->kern, r2) * (wall ? e->vol0 : vol[j]), r = sqrt(r2), zj = rhoj * cj;
+    const double fv = kernel_f(&ctx->prm->kern, r2) * (wall ? ctx->prm->vol0 : vol[j]), r = sqrt(r2), zj = rhoj * cj;
     if (MOMENTUM) {
       double pstar = riemann_pressure(ci->z, ci->p, zj, pj, -vdx / r, (ci->z + zj) / (ci->rho + rhoj));
       double eta = harmonic_mean(ci->eta, etaj);
@@ -97,9 +97,9 @@ static inline __attribute__((always_inline)) void riemann_sums(const struct engi
 }
 
 /* The constants of particle i. */
-static void centre_of(const struct engine *e, long i, struct rcentre *ci) {
-  const struct parts *p = &e->p;
-  const struct phase *f = &e->c->phases[p->phase[i]];
+static void centre_of(const struct pass_ctx *ctx, long i, struct rcentre *ci) {
+  const struct parts *p = ctx->p;
+  const struct phase *f = &ctx->c->phases[p->phase[i]];
   ci->i = i;
   ci->phase = p->phase[i];
   for (int d = 0; d < 3; d++) {
@@ -107,7 +107,7 @@ static void centre_of(const struct engine *e, long i, struct rcentre *ci) {
     ci->v[d] = d < p->dim ? p->v[d][i] : 0.0;
     ci->a[d] = 0.0;
   }
-  body_acceleration(e, i, ci->a);
+  body_acceleration(ctx, i, ci->a);
   ci->rho = p->rho[i];
   ci->p = p->p[i];
   ci->c = f->c0;
@@ -116,55 +116,55 @@ static void centre_of(const struct engine *e, long i, struct rcentre *ci) {
 }
 
 /* The sums of i in the specialisation for the dimension. */
-static void sums_of(struct engine *e, const struct rcentre *ci, const struct neighbours *nb, double *grad_p,
+static void sums_of(struct pass_ctx *ctx, const struct rcentre *ci, const struct neighbours *nb, double *grad_p,
                     double *visc, double *drho, int momentum) {
-  long *pairs = &e->pass_pairs;
-  if (e->p.dim == 2) momentum ? riemann_sums(e, ci, nb, grad_p, visc, drho, pairs, 2, 1)
-                              : riemann_sums(e, ci, nb, grad_p, visc, drho, pairs, 2, 0);
-  else momentum ? riemann_sums(e, ci, nb, grad_p, visc, drho, pairs, 3, 1)
-                : riemann_sums(e, ci, nb, grad_p, visc, drho, pairs, 3, 0);
+  long *pairs = &ctx->out.pairs;
+  if (ctx->p->dim == 2) momentum ? riemann_sums(ctx, ci, nb, grad_p, visc, drho, pairs, 2, 1)
+                              : riemann_sums(ctx, ci, nb, grad_p, visc, drho, pairs, 2, 0);
+  else momentum ? riemann_sums(ctx, ci, nb, grad_p, visc, drho, pairs, 3, 1)
+                : riemann_sums(ctx, ci, nb, grad_p, visc, drho, pairs, 3, 0);
 }
 
 /* du/dt of fluid particle i. */
-static void momentum_of(struct engine *e, long i, const struct neighbours *nb) {
+static void momentum_of(struct pass_ctx *ctx, long i, const struct neighbours *nb) {
   struct rcentre ci;
   double grad_p[3], visc[3], drho;
-  centre_of(e, i, &ci);
-  sums_of(e, &ci, nb, grad_p, visc, &drho, 1);
-  for (int d = 0; d < e->p.dim; d++) e->w.dv[d][i] = 2.0 * (visc[d] - grad_p[d]) / ci.rho + ci.a[d];
+  centre_of(ctx, i, &ci);
+  sums_of(ctx, &ci, nb, grad_p, visc, &drho, 1);
+  for (int d = 0; d < ctx->p->dim; d++) ctx->w->dv[d][i] = 2.0 * (visc[d] - grad_p[d]) / ci.rho + ci.a[d];
 }
 
 /* drho/dt of fluid particle i. */
-static void continuity_of(struct engine *e, long i, const struct neighbours *nb) {
+static void continuity_of(struct pass_ctx *ctx, long i, const struct neighbours *nb) {
   struct rcentre ci;
   double grad_p[3], visc[3], drho;
-  centre_of(e, i, &ci);
-  sums_of(e, &ci, nb, grad_p, visc, &drho, 0);
-  e->w.drho[i] = 2.0 * ci.rho * drho;
+  centre_of(ctx, i, &ci);
+  sums_of(ctx, &ci, nb, grad_p, visc, &drho, 0);
+  ctx->w->drho[i] = 2.0 * ci.rho * drho;
 }
 
-void pass_riemann_momentum(struct engine *e) { pass_for_each_owned(e, momentum_of, NULL); }
+void pass_riemann_momentum(struct pass_ctx *ctx) { pass_for_each_owned(ctx, momentum_of, NULL); }
 
-void pass_riemann_continuity(struct engine *e) { pass_for_each_owned(e, continuity_of, NULL); }
+void pass_riemann_continuity(struct pass_ctx *ctx) { pass_for_each_owned(ctx, continuity_of, NULL); }
 
 /* Transport-velocity acceleration of fluid particle i into dv (0 for heavy phases). */
-static void transport_of(struct engine *e, long i, const struct neighbours *nb) {
-  const struct parts *p = &e->p;
+static void transport_of(struct pass_ctx *ctx, long i, const struct neighbours *nb) {
+  const struct parts *p = ctx->p;
   const int dim = p->dim;
   double s[3] = {0, 0, 0};
-  if (riemann_light_phase(e->c, p->phase[i])) {
+  if (riemann_light_phase(ctx->c, p->phase[i])) {
     long n = 0;
     struct neighbours it = *nb;
     for (long j; neighbours_next(&it, &j);) {
       double dx[3], r2 = pair_separation(p, dim, i, j, dx);
-      if (r2 >= e->kern.support2) continue;
-      double fv = kernel_f(&e->kern, r2) * e->w.vol[j];
+      if (r2 >= ctx->prm->kern.support2) continue;
+      double fv = kernel_f(&ctx->prm->kern, r2) * ctx->w->vol[j];
       for (int d = 0; d < dim; d++) s[d] += fv * dx[d];
       n++;
     }
-    e->pass_pairs += n;
+    ctx->out.pairs += n;
   }
-  for (int d = 0; d < dim; d++) e->w.dv[d][i] = -2.0 * e->tv_pressure * s[d] / p->rho[i];
+  for (int d = 0; d < dim; d++) ctx->w->dv[d][i] = -2.0 * ctx->prm->tv_pressure * s[d] / p->rho[i];
 }
 
-void pass_transport_acceleration(struct engine *e) { pass_for_each_owned(e, transport_of, NULL); }
+void pass_transport_acceleration(struct pass_ctx *ctx) { pass_for_each_owned(ctx, transport_of, NULL); }

@@ -20,10 +20,10 @@
 #include "physics/passes.h"
 
 /* Shepard pressure of owned fluid particle i over the fluid of every phase (walls excluded). */
-static void shepard_pressure(struct engine *e, long i, const struct neighbours *nb) {
-  const struct parts *p = &e->p;
-  const double *restrict vol = e->w.vol, *restrict pres = p->p;
-  const double w0 = kernel_w(&e->kern, 0.0), support2 = e->kern.support2;
+static void shepard_pressure(struct pass_ctx *ctx, long i, const struct neighbours *nb) {
+  const struct parts *p = ctx->p;
+  const double *restrict vol = ctx->w->vol, *restrict pres = p->p;
+  const double w0 = kernel_w(&ctx->prm->kern, 0.0), support2 = ctx->prm->kern.support2;
   double p_sum = pres[i] * vol[i] * w0, vol_sum = vol[i] * w0;
   long pairs = 0;
   struct neighbours it = *nb;
@@ -31,27 +31,27 @@ static void shepard_pressure(struct engine *e, long i, const struct neighbours *
     if (p->phase[j] == PHASE_WALL) continue;
     double dx[3], r2 = pair_separation(p, p->dim, i, j, dx);
     if (r2 >= support2) continue;
-    double wv = kernel_w(&e->kern, r2) * vol[j];
+    double wv = kernel_w(&ctx->prm->kern, r2) * vol[j];
     p_sum += pres[j] * wv;
     vol_sum += wv;
     pairs++;
   }
-  e->w.p_shepard[i] = p_sum / vol_sum;
-  e->pass_pairs += pairs;
+  ctx->w->p_shepard[i] = p_sum / vol_sum;
+  ctx->out.pairs += pairs;
 }
 
-void pass_shepard_pressure(struct engine *e) { pass_for_each_owned(e, shepard_pressure, NULL); }
+void pass_shepard_pressure(struct pass_ctx *ctx) { pass_for_each_owned(ctx, shepard_pressure, NULL); }
 
 /* Sums over the neighbours of fluid particle i. */
 struct spc_sums {
   double div, diff, grad_p[3], visc[3], repulsion[3];
 };
 
-void spc_wall_repulsion(const struct engine *e, long i, long b, double *acc) {
-  const struct parts *p = &e->p;
+void spc_wall_repulsion(const struct pass_ctx *ctx, long i, long b, double *acc) {
+  const struct parts *p = ctx->p;
   const int dim = p->dim;
   double xs[3], n[3], nn = 0, un = 0, rn = 0, r2 = 0;
-  wall_mirror_point(e, b, xs);
+  wall_mirror_point(ctx, b, xs);
   for (int d = 0; d < dim; d++) {
     n[d] = xs[d] - p->x[d][b];
     nn += n[d] * n[d];
@@ -62,27 +62,27 @@ void spc_wall_repulsion(const struct engine *e, long i, long b, double *acc) {
     rn += (p->x[d][i] - p->x[d][b]) * n[d];
     r2 += (p->x[d][i] - p->x[d][b]) * (p->x[d][i] - p->x[d][b]);
   }
-  if (un >= 0 || r2 >= e->kern.support2) return;
-  double f = -e->c->phases[p->phase[i]].c0 * un * kernel_w(&e->kern, r2) * pow(e->h, dim) / fabs(rn);
+  if (un >= 0 || r2 >= ctx->prm->kern.support2) return;
+  double f = -ctx->c->phases[p->phase[i]].c0 * un * kernel_w(&ctx->prm->kern, r2) * pow(ctx->prm->h, dim) / fabs(rn);
   for (int d = 0; d < dim; d++) acc[d] += f * n[d];
 }
 
 /* The pair sums of fluid particle i over its neighbours. */
-static void spc_sums(const struct engine *e, long i, const struct neighbours *nb, struct spc_sums *s,
+static void spc_sums(const struct pass_ctx *ctx, long i, const struct neighbours *nb, struct spc_sums *s,
                      long *pairs) {
-  const struct parts *p = &e->p;
-  const double *restrict rho = p->rho, *restrict pres = p->p, *restrict vol = e->w.vol;
-  const double *restrict p_tilde = e->w.p_shepard;
-  const int conventional = e->c->spc_model == SPC_CONVENTIONAL;
-  const int gas = !e->c->phases[p->phase[i]].incompressible;
+  const struct parts *p = ctx->p;
+  const double *restrict rho = p->rho, *restrict pres = p->p, *restrict vol = ctx->w->vol;
+  const double *restrict p_tilde = ctx->w->p_shepard;
+  const int conventional = ctx->c->spc_model == SPC_CONVENTIONAL;
+  const int gas = !ctx->c->phases[p->phase[i]].incompressible;
   const int dim = p->dim, ph = p->phase[i];
-  const struct phase *fi = &e->c->phases[ph];
-  const double pi = pres[i], rhoi = rho[i], eta2 = 0.01 * e->h * e->h, support2 = e->kern.support2;
+  const struct phase *fi = &ctx->c->phases[ph];
+  const double pi = pres[i], rhoi = rho[i], eta2 = 0.01 * ctx->prm->h * ctx->prm->h, support2 = ctx->prm->kern.support2;
   double mu[CASE_MAX_PHASES];
   int heavier[CASE_MAX_PHASES];   /* phases whose velocities i's divergence reads besides its own */
-  for (int k = 0; k < e->c->n_phases; k++) {
-    mu[k] = phase_viscosity_total(e, k);
-    heavier[k] = e->c->phases[k].rho0 > fi->rho0;
+  for (int k = 0; k < ctx->c->n_phases; k++) {
+    mu[k] = phase_viscosity_total(ctx, k);
+    heavier[k] = ctx->c->phases[k].rho0 > fi->rho0;
   }
   *s = (struct spc_sums){0};
   struct neighbours it = *nb;
@@ -91,14 +91,14 @@ static void spc_sums(const struct engine *e, long i, const struct neighbours *nb
     if (r2 >= support2) continue;
     (*pairs)++;
     for (int d = 0; d < dim; d++) dvdx += (p->v[d][j] - p->v[d][i]) * dx[d];
-    const double fv = kernel_f(&e->kern, r2) * vol[j];   /* gW_ij = fv (r_i - r_j) */
+    const double fv = kernel_f(&ctx->prm->kern, r2) * vol[j];   /* gW_ij = fv (r_i - r_j) */
     const int wall = p->phase[j] == PHASE_WALL, same = p->phase[j] == ph;
     const double p_star = same || wall || conventional ? pres[j] : p_tilde[j];
     const double rho_star = same ? rho[j] : eos_density(fi, p_star);
     const double mu_ij = harmonic_mean(mu[ph], wall ? mu[ph] : mu[p->phase[j]]);
     const double pi_ij = -dvdx / (r2 + eta2);   /* u_ji.r_ji / (r^2 + 0.01 h^2) */
     if (same || wall || conventional || (!wall && heavier[p->phase[j]])) s->div += dvdx * fv;
-    if (wall && gas) spc_wall_repulsion(e, i, j, s->repulsion);
+    if (wall && gas) spc_wall_repulsion(ctx, i, j, s->repulsion);
     s->diff -= 2.0 * (rho_star - rhoi) * fv;    /* psi*_ij.gW_ij: r_ji.r_ij / r^2 = -1 */
     for (int d = 0; d < dim; d++) {
       s->grad_p[d] += (pi + p_star) * fv * dx[d];
@@ -108,16 +108,16 @@ static void spc_sums(const struct engine *e, long i, const struct neighbours *nb
 }
 
 /* Both right-hand sides of owned fluid particle i. */
-static void same_phase_rhs(struct engine *e, long i, const struct neighbours *nb) {
-  const struct parts *p = &e->p;
-  const struct phase *f = &e->c->phases[p->phase[i]];
+static void same_phase_rhs(struct pass_ctx *ctx, long i, const struct neighbours *nb) {
+  const struct parts *p = ctx->p;
+  const struct phase *f = &ctx->c->phases[p->phase[i]];
   struct spc_sums s;
   double g[3];
-  spc_sums(e, i, nb, &s, &e->pass_pairs);
-  body_acceleration(e, i, g);
-  e->w.drho[i] = -p->rho[i] * s.div + e->c->delta * e->h * f->c0 * s.diff;
+  spc_sums(ctx, i, nb, &s, &ctx->out.pairs);
+  body_acceleration(ctx, i, g);
+  ctx->w->drho[i] = -p->rho[i] * s.div + ctx->c->delta * ctx->prm->h * f->c0 * s.diff;
   for (int d = 0; d < p->dim; d++)
-    e->w.dv[d][i] = (-s.grad_p[d] + 2.0 * (p->dim + 2) * s.visc[d]) / p->rho[i] + s.repulsion[d] + g[d];
+    ctx->w->dv[d][i] = (-s.grad_p[d] + 2.0 * (p->dim + 2) * s.visc[d]) / p->rho[i] + s.repulsion[d] + g[d];
 }
 
-void pass_same_phase_rhs(struct engine *e) { pass_for_each_owned(e, same_phase_rhs, NULL); }
+void pass_same_phase_rhs(struct pass_ctx *ctx) { pass_for_each_owned(ctx, same_phase_rhs, NULL); }

@@ -8,19 +8,18 @@
  * (doc/theory.md §5). It acts on a particle only when it trips, so a flow that keeps its distance
  * from the walls is bitwise unchanged. */
 #include <math.h>
-#include "engine/engine.h"
 #include "case/geometry.h"
 #include "physics/passes.h"
-#include "engine/wall_guard.h"
+#include "physics/wall_guard.h"
 
 /* Signed distance [m] of x (in the current frame) from wall w's boundary, positive on the fluid
  * side, and the unit normal n toward the fluid and the boundary point q, both in the current
  * frame. Returns 0 where the direction is undefined (x on the boundary). */
-static int wall_side(const struct engine *e, int w, const double *x, double *dist, double *n, double *q) {
-  const struct wall *wl = &e->c->walls[w];
-  int dim = e->p.dim;
+static int wall_side(const struct pass_ctx *ctx, int w, const double *x, double *dist, double *n, double *q) {
+  const struct wall *wl = &ctx->c->walls[w];
+  int dim = ctx->p->dim;
   double xw[3] = {x[0], x[1], dim == 3 ? x[2] : 0}, qw[3] = {0, 0, 0}, tip[3] = {0, 0, 0};
-  if (wl->moving) frame_reference(&e->frames[w], dim, x, xw);
+  if (wl->moving) frame_reference(&ctx->prm->frames[w], dim, x, xw);
   int inside = shape_contains(&wl->shape, dim, xw);
   int fluid_side = inside == (wl->fluid_side == FLUID_INSIDE);
   double d = shape_nearest_boundary(&wl->shape, dim, xw, qw);
@@ -29,8 +28,8 @@ static int wall_side(const struct engine *e, int w, const double *x, double *dis
   for (int k = 0; k < dim; k++) tip[k] = qw[k] + sign * (xw[k] - qw[k]) / d;
   double tip_now[3] = {0, 0, 0};
   if (wl->moving) {
-    frame_position(&e->frames[w], dim, qw, q);
-    frame_position(&e->frames[w], dim, tip, tip_now);
+    frame_position(&ctx->prm->frames[w], dim, qw, q);
+    frame_position(&ctx->prm->frames[w], dim, tip, tip_now);
   } else
     for (int k = 0; k < dim; k++) q[k] = qw[k], tip_now[k] = tip[k];
   for (int k = 0; k < dim; k++) n[k] = tip_now[k] - q[k];
@@ -41,15 +40,15 @@ static int wall_side(const struct engine *e, int w, const double *x, double *dis
 /* Within the guard distance of wall w (in guard[], [m]): the particle's normal n toward the
  * fluid, and the wall's velocity and acceleration at its nearest boundary point. Returns 0 if
  * particle i is farther away. */
-static int near_wall(const struct engine *e, long i, int w, double guard, double *n, double *u_wall,
+static int near_wall(const struct pass_ctx *ctx, long i, int w, double guard, double *n, double *u_wall,
                      double *a_wall) {
-  int dim = e->p.dim;
+  int dim = ctx->p->dim;
   double x[3] = {0, 0, 0}, q[3] = {0, 0, 0}, dist;
-  for (int k = 0; k < dim; k++) x[k] = e->p.x[k][i], u_wall[k] = 0, a_wall[k] = 0;
-  if (!wall_side(e, w, x, &dist, n, q) || dist >= guard) return 0;
-  if (e->c->walls[w].moving) {
-    frame_velocity(&e->frames[w], dim, q, u_wall);
-    frame_acceleration(&e->frames[w], dim, q, a_wall);
+  for (int k = 0; k < dim; k++) x[k] = ctx->p->x[k][i], u_wall[k] = 0, a_wall[k] = 0;
+  if (!wall_side(ctx, w, x, &dist, n, q) || dist >= guard) return 0;
+  if (ctx->c->walls[w].moving) {
+    frame_velocity(&ctx->prm->frames[w], dim, q, u_wall);
+    frame_acceleration(&ctx->prm->frames[w], dim, q, a_wall);
   }
   return 1;
 }
@@ -68,43 +67,42 @@ static void remove_inward(double *const *f, long i, int dim, const double *n, do
 }
 
 /* The guard distance [m], 0 when the guard is off. */
-static double guard_distance(const struct engine *e) {
-  return e->c->wall_guard * e->c->dx;
+static double guard_distance(const struct pass_ctx *ctx) {
+  return ctx->c->wall_guard * ctx->c->dx;
 }
 
-void pass_wall_guard(struct engine *e) {
-  struct parts *p = &e->p;
-  double guard = guard_distance(e), n[3], u_wall[3], a_wall[3], v[3], a[3], du[3], zero[3] = {0, 0, 0};
+void pass_wall_guard(struct pass_ctx *ctx) {
+  struct parts *p = ctx->p;
+  double guard = guard_distance(ctx), n[3], u_wall[3], a_wall[3], v[3], a[3], du[3], zero[3] = {0, 0, 0};
   int dim = p->dim;
   for (long i = 0; i < p->n_owned; i++) {
     if (p->phase[i] == PHASE_WALL) continue;
-    for (int w = 0; w < e->c->n_walls; w++) {
-      if (!near_wall(e, i, w, guard, n, u_wall, a_wall)) continue;
-      for (int k = 0; k < dim; k++) v[k] = p->v[k][i], a[k] = e->w.dv[k][i];
-      if (normal_part(dim, n, v, u_wall) <= 0) remove_inward(e->w.dv, i, dim, n, normal_part(dim, n, a, a_wall));
-      if (!e->w.du[0]) continue;
-      for (int k = 0; k < dim; k++) du[k] = e->w.du[k][i];
-      remove_inward(e->w.du, i, dim, n, normal_part(dim, n, du, zero));
+    for (int w = 0; w < ctx->c->n_walls; w++) {
+      if (!near_wall(ctx, i, w, guard, n, u_wall, a_wall)) continue;
+      for (int k = 0; k < dim; k++) v[k] = p->v[k][i], a[k] = ctx->w->dv[k][i];
+      if (normal_part(dim, n, v, u_wall) <= 0) remove_inward(ctx->w->dv, i, dim, n, normal_part(dim, n, a, a_wall));
+      if (!ctx->w->du[0]) continue;
+      for (int k = 0; k < dim; k++) du[k] = ctx->w->du[k][i];
+      remove_inward(ctx->w->du, i, dim, n, normal_part(dim, n, du, zero));
     }
   }
 }
 
-long wall_guard_apply(struct engine *e) {
-  struct parts *p = &e->p;
-  double guard = guard_distance(e), n[3], u_wall[3], a_wall[3], v[3];
+long wall_guard_apply(const struct pass_ctx *ctx) {
+  struct parts *p = ctx->p;
+  double guard = guard_distance(ctx), n[3], u_wall[3], a_wall[3], v[3];
   int dim = p->dim;
   long hits = 0;
   if (!(guard > 0)) return 0;
   for (long i = 0; i < p->n_owned; i++) {
     if (p->phase[i] == PHASE_WALL) continue;
-    for (int w = 0; w < e->c->n_walls; w++) {
-      if (!near_wall(e, i, w, guard, n, u_wall, a_wall)) continue;
+    for (int w = 0; w < ctx->c->n_walls; w++) {
+      if (!near_wall(ctx, i, w, guard, n, u_wall, a_wall)) continue;
       for (int k = 0; k < dim; k++) v[k] = p->v[k][i];
       double un = normal_part(dim, n, v, u_wall);
       hits += un < 0;
       remove_inward(p->v, i, dim, n, un);
     }
   }
-  e->wall_guard_hits += hits;
   return hits;
 }

@@ -1,0 +1,110 @@
+/* pass_ctx.h — what a pass works on: the case, the physics parameters, the particles, the work
+ * arrays, the neighbour lists and the cell index, and the counts it reports back. The engine
+ * builds one (engine_pass_ctx) and hands it to each pass; the physics layer sees nothing else of
+ * the engine (no MPI state, no outputs, no timings). */
+#ifndef MPSPH_PASS_CTX_H
+#define MPSPH_PASS_CTX_H
+
+#include "base/parts.h"
+#include "case/case.h"
+#include "parallel/nlist.h"
+#include "parallel/space.h"
+#include "physics/interface.h"
+#include "physics/kernel.h"
+
+/** Terms and passes a scene needs, decided once at start-up from the case. */
+enum {
+  FEAT_WALLS = 1,          /* wall ghost interpolation */
+  FEAT_SHIFT = 2,          /* particle shifting velocity du (advection with u + du) */
+  FEAT_DELTA_U = 4,        /* the delta-u terms of continuity and momentum (consistent shifting) */
+  FEAT_DAMPER = 8,         /* acoustic damper on the liquid phases */
+  FEAT_SURFACE = 16,       /* free-surface detection (region, normals) */
+  FEAT_TIC = 32,           /* tensile instability control */
+  FEAT_SHARPNESS = 64,     /* interface sharpness force */
+  FEAT_CENTRAL = 128,      /* quadratic potential body force */
+  FEAT_SURFACE_TENSION = 256,  /* CSF surface tension between the fluid phases */
+  FEAT_SHEPARD = 512,      /* scheme delta-sph: same-phase Shepard density and the pressure from it */
+  FEAT_SAME_PHASE_CONTINUITY = 1024,  /* scheme same-phase-continuity (paper 003): its own rhs pass,
+                                         Shepard pressure of other-phase neighbours, midpoint
+                                         predictor-corrector, density threshold */
+  FEAT_GENERALIZED_DISSIPATION = 2048,  /* scheme generalized-dissipation (paper 004) */
+  FEAT_RIEMANN = 4096,     /* scheme riemann: Riemann pair terms, density re-initialisation, dual time stepping */
+  FEAT_TRANSPORT_VELOCITY = 8192,  /* scheme riemann with a light phase: its transport-velocity shift */
+  FEAT_DIFFUSION = 16384,  /* density diffusion (delta > 0); in delta-plus and delta-sph also the
+                              renormalised density gradient it reads */
+  FEAT_VISCOSITY = 32768   /* artificial (alpha > 0) or laminar (a phase's viscosity > 0) viscosity */
+};
+
+/** Work arrays of the scheme, sized to the particle capacity (those read at halo slots) or to
+ *  the owned particles (the RK4 state and sums, the derivatives, the free-surface region and
+ *  normals); optional ones stay NULL when the scene does not need them. The engine allocates
+ *  them (engine_work_reserve); the passes fill them. */
+struct work {
+  long capacity, owned_capacity;
+  double *vol;                     /* particle volume m/rho of every slot, this stage [m^dim] */
+  double *grad_rho[3];             /* renormalised density gradient [kg/m^4] */
+  double *div;                     /* velocity divergence <div u> over all neighbours [1/s] */
+  double *drho, *dv[3];            /* right-hand sides of the current stage */
+  double *x0[3], *v0[3], *rho0;    /* state at the start of the step */
+  double *sum_x[3], *sum_v[3], *sum_rho;   /* RK4 weighted sums of the stage derivatives */
+  double *du[3];                   /* FEAT_SHIFT: shifting velocity [m/s] */
+  double *surface;                 /* FEAT_SURFACE: 1 for detected free-surface particles */
+  double *region;                  /* FEAT_SURFACE: 1 in the free-surface region (band) */
+  double *normal[3];               /* FEAT_SURFACE: outward unit normal */
+  double *lambda;                  /* FEAT_SURFACE: smallest eigenvalue of the B matrix */
+  double *rho_s;                   /* FEAT_SHEPARD: same-phase Shepard density [kg/m^3] */
+  double *interface_normal[3];     /* FEAT_SURFACE_TENSION: unit normal of the colour gradient,
+                                      toward the other phase; 0 off the interface band */
+  double *colour_grad;             /* FEAT_SURFACE_TENSION: |grad chi| on the band, else 0 [1/m] */
+  double *kappa_curvature;         /* FEAT_SURFACE_TENSION: div n, 0 off the band [1/m] */
+  double *p_shepard;               /* FEAT_SAME_PHASE_CONTINUITY: Shepard pressure over the fluid of
+                                      every phase, the particle included [Pa] */
+  double *gd_gamma;                /* FEAT_GENERALIZED_DISSIPATION: Shepard sum incl. self, 1 on
+                                      wall ghosts [-] */
+  double *gd_grad_p[3];            /* FEAT_GENERALIZED_DISSIPATION: renormalised <grad p>^L [Pa/m] */
+};
+
+/** The parameters the physics reads, derived from the case by the engine: fixed at set-up and
+ *  assembly, except the last group, which the time stepper sets before the passes that read it. */
+struct physics_params {
+  struct kernel kern;
+  double h, vol0;                  /* smoothing length [m], dx^dim [m^dim] */
+  double list_radius;              /* build radius of the neighbour lists: the cell edge [m] */
+  double c_max;                    /* largest phase sound speed [m/s] */
+  unsigned features;               /* FEAT_* of the assembled pipeline */
+  struct interface_weights iface[3];   /* eps/phi/kappa per pair relation (case interface mode) */
+  double damper_coef[CASE_MAX_PHASES + 1];  /* alpha2 c0 h of phase k at [k + 1]; 0 for gases, walls [m^2/s] */
+  double lattice_w_sum;            /* scheme riemann: sum of W over the undisturbed lattice, self
+                                      included [1/m^dim] */
+  /* set by the time stepper */
+  struct frame frames[CASE_MAX_WALLS];   /* the moving walls' frames at the stage's time */
+  double rho_min[CASE_MAX_PHASES]; /* global minimum density per phase (first stage) [kg/m^3] */
+  double tv_pressure;              /* scheme riemann: background pressure of the transport velocity
+                                      this step [Pa] */
+};
+
+/** What a pass reports back; zero when it starts, added up by the engine after it. */
+struct pass_out {
+  long pairs;                      /* neighbour-pair evaluations */
+  long renorm_fallbacks;           /* particles whose renormalisation matrix was singular */
+  long n_surface;                  /* owned particles detected on the free surface */
+};
+
+/** The context of a pass. Pointers, so that the engine's arrays and parameters are seen as they
+ *  are when the pass runs; a pass writes the owned slots of p and w (pass_volumes: every slot's
+ *  volume), the lists (pass_neighbour_lists; the others their read-back scratch,
+ *  nlist_enter_cell) and out, and never talks to another rank. */
+struct pass_ctx {
+  const struct case_def *c;
+  const struct physics_params *prm;
+  struct parts *p;                 /* owned slots, then the halo */
+  struct work *w;
+  struct nlist *nl;                /* neighbour lists of the owned fluid (built by pass_neighbour_lists) */
+  const struct space *space;       /* cells: the index the lists and visit_near walk */
+  struct pass_out out;
+};
+
+/** A pass: one operation of the stage pipeline over the context's particles. */
+typedef void (*pass_fn)(struct pass_ctx *ctx);
+
+#endif
