@@ -23,6 +23,7 @@ expect() {  # expect STATUS PATTERN -- command...
 case=cases/hydrostatic-1phase/case.yaml
 expect 0 "usage" -- build/mpsph --help
 expect 0 "^mpsph " -- build/mpsph --version
+expect 0 "^\| \`physics.delta\` \| number" -- build/mpsph keys
 expect 0 "# particles: 625 fluid" -- build/mpsph check "$case"
 expect 0 "# memory: about [0-9.]+ MB on one rank \(450 bytes per particle" -- build/mpsph check "$case"
 expect 0 "# particles: up to 1e\+10 .*not counted" -- \
