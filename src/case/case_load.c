@@ -1269,7 +1269,8 @@ static const struct case_key CASE_KEYS[] = {
 
 /* ---- reading by the tables ---- */
 
-#define MAX_SECTION_KEYS 32
+#define MAX_SECTION_KEYS N_CASE_KEYS   /* no mapping has more keys than the largest table */
+_Static_assert(sizeof PHASE_ITEM_KEYS / sizeof PHASE_ITEM_KEYS[0] <= MAX_SECTION_KEYS, "room for a phase's keys");
 
 /* The allowed keys of mapping `section` of table t ("": the root, whose keys are the
  * top-level keys and the sections) into out, NULL-terminated. */
@@ -1280,7 +1281,7 @@ static const char *const *section_keys(const struct case_key *t, int n, const ch
     const char *name = section[0] ? t[i].key : t[i].section[0] ? t[i].section : t[i].key;
     int seen = strcmp(t[i].section, section) != 0 && section[0];
     for (int j = 0; j < k && !seen; j++) seen = strcmp(out[j], name) == 0;
-    if (!seen && k < MAX_SECTION_KEYS) out[k++] = name;
+    if (!seen) out[k++] = name;
   }
   out[k] = NULL;
   return out;
