@@ -61,7 +61,7 @@ LIB_OBJ  := $(patsubst src/%.c,build/obj/%.o,$(filter-out src/app/main.c,$(SRC))
 TEST_SRC := $(wildcard tests/test_*.c)
 TEST_BIN := $(patsubst tests/%.c,build/tests/%,$(TEST_SRC))
 
-.PHONY: all deps test run validate bench fuzz clean asan
+.PHONY: all deps test run validate bench fuzz clean asan keys-doc
 all: build/mpsph $(TEST_BIN) build/tests/fuzz_replay
 asan: build/asan/mpsph
 
@@ -116,6 +116,11 @@ fuzz:
 	@cp tests/cases/*.yaml tests/fuzz_regressions/* build/fuzz/seeds/
 	build/fuzz/fuzz_case_load -max_total_time=$(FUZZ_SECONDS) -timeout=10 -dict=tests/fuzz/case.dict \
 	  -artifact_prefix=build/fuzz/ build/fuzz/corpus build/fuzz/seeds
+
+# The case key reference of doc/user-guide.md (section 2.1) rewritten from `mpsph keys`;
+# tests/keys_reference.sh fails when it is out of date.
+keys-doc: build/mpsph
+	@scripts/keys-doc
 
 test: deps
 	@$(MAKE) --no-print-directory all asan

@@ -23,6 +23,7 @@ expect() {  # expect STATUS PATTERN -- command...
 case=cases/hydrostatic-1phase/case.yaml
 expect 0 "usage" -- build/mpsph --help
 expect 0 "^mpsph " -- build/mpsph --version
+expect 0 "^\| \`physics.delta\` \| number" -- build/mpsph keys
 expect 0 "# particles: 625 fluid" -- build/mpsph check "$case"
 expect 0 "# memory: about [0-9.]+ MB per rank on 1 rank \(1117 particles with the halo at 450 bytes" -- build/mpsph check "$case"
 # --ranks N: the estimate per rank for N ranks (a share and its halo), check only, N a whole number.

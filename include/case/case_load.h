@@ -3,6 +3,7 @@
 #define MPSPH_CASE_LOAD_H
 
 #include <stddef.h>
+#include <stdio.h>
 #include "case/case.h"
 
 /** Load `path`, apply the overrides `sets[0..n_sets-1]` ("key.path=value", value in YAML flow
@@ -20,6 +21,10 @@ int case_load_string(const char *text, size_t len, const char *source, int n_set
 /** The resolved case as YAML text (every key, defaults filled). Caller frees. Loading this
  *  text again gives the same case. */
 char *case_to_yaml(const struct case_def *c);
+
+/** Print the reference of the case keys read by a table (every key but those of the fluid, wall
+ *  and probe items) as a markdown table to f: path, type, default, allowed values, meaning. */
+void case_keys_markdown(FILE *f);
 
 /** The number of probes.csv columns of probe k of c (1, or 3 + dimension for an integral) and,
  *  if buf is not NULL, the name of column col (< that number) in buf. */

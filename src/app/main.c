@@ -1,4 +1,4 @@
-/* main.c — command line: mpsph run | check | --help | --version. */
+/* main.c — command line: mpsph run | check | keys | --help | --version. */
 #include <mpi.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -15,11 +15,13 @@ static const char *usage =
     "usage:\n"
     "  mpirun -n N mpsph run CASE.yaml [-o OUTDIR] [--set key.path=value ...] [--restart [FILE]]\n"
     "  mpsph check CASE.yaml [--set key.path=value ...] [--ranks N]\n"
+    "  mpsph keys\n"
     "  mpsph --help | --version\n"
     "\n"
     "run    runs the case; output goes to OUTDIR (default runs/<case name>)\n"
     "check  validates the case, prints the resolved case, the particle counts and the memory per\n"
     "       rank of a run on N ranks (default 1), without generating the particles\n"
+    "keys   prints the reference of the case keys (a markdown table)\n"
     "--set  overrides any key of the case file, e.g. --set resolution.dx=0.005 --set time.end=0.5\n"
     "--restart  continues from FILE (default OUTDIR/checkpoint.h5), on any number of ranks\n"
     "SIGTERM, SIGINT or SIGUSR1 stop a run cleanly: it writes OUTDIR/checkpoint.h5 and exits 0\n"
@@ -140,6 +142,7 @@ static int run_case(const struct case_def *c, const struct args *a) {
 int main(int argc, char **argv) {
   if (argc == 2 && (!strcmp(argv[1], "--help") || !strcmp(argv[1], "-h"))) return printf("%s", usage), 0;
   if (argc == 2 && !strcmp(argv[1], "--version")) return printf("mpsph %s\n", MPSPH_VERSION), 0;
+  if (argc == 2 && !strcmp(argv[1], "keys")) return case_keys_markdown(stdout), 0;
   MPI_Init(&argc, &argv);
   setvbuf(stdout, NULL, _IOLBF, 0);   /* progress shows up in batch logs as it is printed */
   int rank, status;

@@ -1,6 +1,8 @@
 /* case_load.c — read a YAML case file (plus --set overrides) into struct case_def, validating
  * every key with one-line messages "<file>:<line>: <key.path>: <what is wrong>, <expected>",
- * and write a resolved case back as YAML. */
+ * and write a resolved case back as YAML. The keys of the top level, its sections and the phases
+ * are tables (CASE_KEYS, PHASE_ITEM_KEYS) that drive the reading, the allowed keys, the writing
+ * and the reference of `mpsph keys`; fluids, walls and probes have readers of their own. */
 #include "case/case_load.h"
 
 #include <errno.h>
@@ -43,38 +45,20 @@ static const char *const SPC_MODEL_NAMES[] = {"present", "conventional", NULL};
 static const char *const DISSIPATION_NAMES[] = {"consistent", "printed", NULL};
 static const char *const RAMP_NAMES[] = {"none", "linear", "smooth", NULL};
 
-/* The keys allowed in each mapping. */
-static const char *const ROOT_KEYS[] = {"name", "description", "dimension", "scheme", "kernel",
-                                        "resolution", "gravity", "potential", "time", "output", "domain",
-                                        "phases", "fluids", "walls", "physics", "initial",
-                                        "probes", "parallel", NULL};
-static const char *const RESOLUTION_KEYS[] = {"dx", "h_over_dx", "origin", NULL};
-static const char *const TIME_KEYS[] = {"end", "cfl", "max_steps", "dt_min", NULL};
-static const char *const OUTPUT_KEYS[] = {"interval", "stats_interval", "probes_interval",
-                                          "progress_interval", "checkpoint_interval", NULL};
+/* The keys allowed in the mappings that a list reader of its own reads (the others follow from
+ * the key tables). */
 static const char *const BOX_KEYS[] = {"min", "max", NULL};
 static const char *const CIRCLE_KEYS[] = {"centre", "radius", "inner_radius", NULL};
-static const char *const PHASE_KEYS[] = {"name", "rho0", "c0", "gamma", "p_background",
-                                         "viscosity", "incompressible", "density_band", NULL};
 static const char *const FLUID_KEYS[] = {"phase", "box", "circle", "polygon", "velocity",
                                          "velocity_gradient", "velocity_mode", NULL};
 static const char *const MODE_KEYS[] = {"amplitude", "wavelength", "interface", NULL};
-static const char *const POTENTIAL_KEYS[] = {"omega", "centre", NULL};
 static const char *const WALL_KEYS[] = {"box", "circle", "polygon", "slip", "fluid_side", "motion", NULL};
 static const char *const MOTION_KEYS[] = {"translation", "rotation", "table", "centre", NULL};
 static const char *const TRANSLATION_KEYS[] = {"amplitude", "period", "phase", "ramp", NULL};
 static const char *const ROTATION_KEYS[] = {"amplitude", "period", "phase", "ramp", "centre", NULL};
 static const char *const RAMP_KEYS[] = {"shape", "time", NULL};
-static const char *const PHYSICS_KEYS[] = {"delta", "artificial_viscosity", "acoustic_damper",
-                                           "shifting", "u_max", "tensile_control", "free_surface",
-                                           "surface_band", "interface_mode", "damper_form",
-                                           "interface_sharpness", "limit_surface_shifting",
-                                           "interface_pressure", "interface_viscosity", "surface_tension", "wall_guard", "spc_model",
-                                           "dissipation_form", NULL};
-static const char *const INITIAL_KEYS[] = {"pressure", NULL};
 static const char *const PROBE_KEYS[] = {"name", "kind", "position", "diameter", "axis",
                                          "interpolation", "phase", NULL};
-static const char *const PARALLEL_KEYS[] = {"repartition_threshold", "repartition_every", NULL};
 
 static const char *const ALNUM = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789";
 static const char *const NAME_PUNCT = "._-";   /* case and phase names (a directory name) */
@@ -117,6 +101,67 @@ struct map {
   char path[PATH_LEN];
 };
 
+
+/* ---- the key tables: what a key holds ---- */
+
+/* The value of a key and the member it fills. */
+enum key_type {
+  KEY_NUMBER,    /* double, within rule */
+  KEY_INTEGER,   /* int, within an integer rule */
+  KEY_COUNT,     /* long, within an integer rule */
+  KEY_CHOICE,    /* an enum (int): the index of the word in names */
+  KEY_BOOL,      /* int: false or true */
+  KEY_TEXT,      /* char[size]: a name of letters, digits and punct, or (punct NULL) any string */
+  KEY_VECTOR,    /* double[3]: one number per dimension (zeros when absent and not required) */
+  KEY_BAND,      /* double[2]: a density band [min_ratio, max_ratio] */
+  KEY_LIST       /* a list of mappings: the count (int) at offset, the items per list */
+};
+
+enum key_flags {
+  KEY_REQUIRED = 1,   /* no default: missing is an error */
+  KEY_LATE = 2,       /* read after every other key (its default needs the lists) */
+  KEY_GIVEN = 4       /* the int at `given` says whether the key was given; written only then */
+};
+
+typedef int (*item_reader)(const struct map *item, struct case_def *c, int i);
+typedef void (*item_writer)(FILE *f, const struct case_def *c, int i);
+
+/* One key of a mapping: where it is, what it holds, its default and its one-line doc. The
+ * tables below drive reading and validation, the allowed keys of each mapping, the resolved-case
+ * writer and `mpsph keys`. */
+struct case_key {
+  const char *section;       /* the mapping holding it ("" : the root, or the list item) */
+  const char *key;
+  enum key_type type;
+  size_t offset;             /* of the member in struct case_def, or in the list's item */
+  int flags;                 /* enum key_flags */
+  const struct rule *rule;   /* KEY_NUMBER, KEY_INTEGER, KEY_COUNT */
+  const char *const *names;  /* KEY_CHOICE */
+  const char *punct;         /* KEY_TEXT: the punctuation a name may hold (NULL: any string) */
+  size_t size;               /* KEY_TEXT: the member's size */
+  double def[2];             /* the default: number, word index, band (text: ""; vector: zeros) */
+  void (*computed)(const struct case_def *c, const void *item, double *out);   /* or from the
+                                                               keys read before it */
+  const char *def_doc;       /* the default as the reference shows it, when computed */
+  size_t given;              /* KEY_GIVEN */
+  int (*written)(const struct case_def *c);   /* NULL: always written */
+  int (*check)(const struct map *m, const struct case_def *c, int i);   /* after reading it */
+  const struct list_def *list;   /* KEY_LIST */
+  const char *doc;           /* what it means, with its unit */
+};
+
+/* A list of mappings: its size, and its items' keys (a key table, or a reader and writer of
+ * its own with the allowed keys). */
+struct list_def {
+  const char *what;          /* the items, plural */
+  int lo, hi;                /* item count range */
+  size_t items, item_size;   /* keys: offset of the item array in struct case_def, item size */
+  const struct case_key *keys;
+  int n_keys;
+  const char *const *allowed;
+  item_reader read;
+  item_writer put;
+};
 /* ---- messages ---- */
 
 static int vfail(struct ld *ld, const char *source, int line, const char *path, const char *fmt,
@@ -304,17 +349,23 @@ static int text_ok(const char *s, const char *punct, size_t cap) {
   return n > 0 && strspn(s, ".") < n;
 }
 
+/* What a text of at most cap - 1 characters may be; punct as for text(). */
+static const char *text_expected(char *buf, size_t len, const char *punct, size_t cap) {
+  if (punct)
+    snprintf(buf, len, "a name of 1 to %zu characters from [A-Za-z0-9%s]%s", cap - 1, punct,
+             strchr(punct, '.') ? ", not only dots" : "");
+  else
+    snprintf(buf, len, "a string of at most %zu characters", cap - 1);
+  return buf;
+}
+
 /* The string under key, shorter than cap; punct non-NULL: a name of letters, digits and punct.
  * def NULL makes it required. */
 static int text(const struct map *m, const char *key, const char *punct, const char *def,
                 size_t cap, char *out) {
   char path[PATH_LEN], expected[128];
   const struct ynode *v = get(m, key, path);
-  if (punct)
-    snprintf(expected, sizeof expected, "a name of 1 to %zu characters from [A-Za-z0-9%s]%s",
-             cap - 1, punct, strchr(punct, '.') ? ", not only dots" : "");
-  else
-    snprintf(expected, sizeof expected, "a string of at most %zu characters", cap - 1);
+  text_expected(expected, sizeof expected, punct, cap);
   if (!v && !def) return missing(m, path, expected);
   if (v && (v->kind != YNODE_SCALAR || !text_ok(v->text, punct, cap)))
     return fail_got(m->ld, v, path, expected);
@@ -345,10 +396,12 @@ static int vec(const struct map *m, const char *key, int required, double *out) 
   return required ? missing(m, path, expected) : 0;
 }
 
+#define BAND_EXPECTED "a list [min_ratio, max_ratio] with 0 <= min_ratio < 1 < max_ratio"
+
 /* The density band [min_ratio, max_ratio] under key, 0 <= min_ratio < 1 < max_ratio; def when
  * absent. */
 static int band(const struct map *m, const char *key, const double *def, double *out) {
-  static const char *expected = "a list [min_ratio, max_ratio] with 0 <= min_ratio < 1 < max_ratio";
+  static const char *expected = BAND_EXPECTED;
   char path[PATH_LEN], got[128];
   const struct ynode *v = get(m, key, path);
   out[0] = def[0];
@@ -374,11 +427,17 @@ static int matrix(const struct map *m, const char *key, double out[3][3]) {
   return 0;
 }
 
+/* What a list of lo..hi items may be. */
+static const char *list_expected(char *buf, size_t len, int lo, int hi, const char *what) {
+  snprintf(buf, len, "a list of %d to %d %s", lo, hi, what);
+  return buf;
+}
+
 /* The list under key, of lo..hi items (*seq NULL when absent and lo == 0). */
 static int list(const struct map *m, const char *key, int lo, int hi, const char *what,
                 const struct ynode **seq, char *path) {
   char expected[128];
-  snprintf(expected, sizeof expected, "a list of %d to %d %s", lo, hi, what);
+  list_expected(expected, sizeof expected, lo, hi, what);
   *seq = get(m, key, path);
   if (!*seq) return lo > 0 ? missing(m, path, expected) : 0;
   if ((*seq)->kind != YNODE_SEQUENCE || (*seq)->n < lo || (*seq)->n > hi)
@@ -386,9 +445,8 @@ static int list(const struct map *m, const char *key, int lo, int hi, const char
   return 0;
 }
 
-/* min and max of a box mapping, max > min in every component. */
-static int corners(const struct map *m, double *lo, double *hi) {
-  if (vec(m, "min", 1, lo) || vec(m, "max", 1, hi)) return 1;
+/* max > min in every component, else an error at key max of box mapping m. */
+static int ordered(const struct map *m, const double *lo, const double *hi) {
   for (int d = 0; d < m->ld->dim; d++) {
     if (hi[d] > lo[d]) continue;
     char path[PATH_LEN], a[128], b[128];
@@ -400,6 +458,10 @@ static int corners(const struct map *m, double *lo, double *hi) {
   return 0;
 }
 
+/* min and max of a box mapping, max > min in every component. */
+static int corners(const struct map *m, double *lo, double *hi) {
+  return vec(m, "min", 1, lo) || vec(m, "max", 1, hi) || ordered(m, lo, hi);
+}
 /* The polygon s read from the list seq at path is simple and encloses an area (a crossing,
  * touching or degenerate one has no well-defined inside). */
 static int polygon_simple(struct ld *ld, const struct ynode *seq, const char *path, const struct shape *s) {
@@ -513,38 +575,8 @@ static int unique_name(const struct map *m, const char *first, size_t stride, in
   return 0;
 }
 
-/* ---- sections ---- */
 
-typedef int (*item_reader)(const struct map *item, struct case_def *c, int i);
-
-/* Read each mapping of the list under key with fn; the count goes to *n. */
-static int read_list(const struct map *root, const char *key, int lo, int hi, const char *what,
-                     const char *const *allowed, item_reader fn, struct case_def *c, int *n) {
-  char path[PATH_LEN], ipath[PATH_LEN];
-  const struct ynode *seq;
-  struct map m;
-  if (list(root, key, lo, hi, what, &seq, path)) return 1;
-  *n = seq ? seq->n : 0;
-  for (int i = 0; i < *n; i++) {
-    join_index(ipath, path, i);
-    if (open_map(root->ld, seq->entries[i].value, NULL, ipath, allowed, &m) || fn(&m, c, i))
-      return 1;
-  }
-  return 0;
-}
-
-static int read_phase(const struct map *m, struct case_def *c, int i) {
-  struct phase *p = &c->phases[i];
-  return text(m, "name", NAME_PUNCT, NULL, sizeof p->name, p->name) ||
-         unique_name(m, c->phases[0].name, sizeof c->phases[0], i) ||
-         num(m, "rho0", &R_POSITIVE, REQUIRED, &p->rho0) ||
-         num(m, "c0", &R_POSITIVE, REQUIRED, &p->c0) ||
-         num(m, "gamma", &R_POSITIVE, 7, &p->gamma) ||
-         num(m, "p_background", &R_ANY, 0, &p->p_background) ||
-         num(m, "viscosity", &R_NONNEGATIVE, 0, &p->viscosity) ||
-         choice(m, "incompressible", BOOL_NAMES, 0, &p->incompressible) ||
-         band(m, "density_band", p->incompressible ? LIQUID_BAND : GAS_BAND, p->density_band);
-}
+/* ---- the items of the lists with readers of their own ---- */
 
 static int phase_index(const struct map *m, const struct case_def *c, int *out) {
   char name[CASE_MAX_NAME], path[PATH_LEN], known[LIST_LEN] = "";
@@ -777,254 +809,6 @@ static int read_probe(const struct map *m, struct case_def *c, int i) {
   return probe_body(m, p, c) || unique_columns(m, c, i);
 }
 
-static int read_top(struct map *m, struct case_def *c) {
-  double dim;
-  int scheme, kernel;
-  if (text(m, "name", NAME_PUNCT, NULL, sizeof c->name, c->name) ||
-      text(m, "description", NULL, "", sizeof c->description, c->description) ||
-      num(m, "dimension", &R_DIMENSION, REQUIRED, &dim) ||
-      choice(m, "scheme", SCHEME_NAMES, SCHEME_DELTA_PLUS, &scheme) ||
-      choice(m, "kernel", KERNEL_NAMES, KERNEL_GAUSSIAN, &kernel))
-    return 1;
-  c->dimension = m->ld->dim = (int)dim;
-  c->scheme = (enum scheme_kind)scheme;
-  c->kernel = (enum kernel_kind)kernel;
-  struct map pot;
-  return vec(m, "gravity", 0, c->gravity) || sub(m, "potential", POTENTIAL_KEYS, &pot) ||
-         num(&pot, "omega", &R_NONNEGATIVE, 0, &c->potential_omega) ||
-         vec(&pot, "centre", 0, c->potential_centre);
-}
-
-/* resolution.origin: the common lattice origin of the fluid regions (absent: each region's
- * lattice is anchored at its shape's lower corner). */
-static int read_lattice_origin(const struct map *r, struct case_def *c) {
-  char path[PATH_LEN];
-  c->has_lattice_origin = get(r, "origin", path) != NULL;
-  return vec(r, "origin", 0, c->lattice_origin);
-}
-
-static int read_run(const struct map *root, struct case_def *c) {
-  struct map r, t, o;
-  int gd = c->scheme == SCHEME_GENERALIZED_DISSIPATION;   /* paper 004: h = 1.1 dx, dt 0.25 h/(c + |u|) */
-  double h_default = c->kernel == KERNEL_GAUSSIAN ? (gd ? 1.1 : 1.33) : 2.0;
-  return sub(root, "resolution", RESOLUTION_KEYS, &r) ||
-         num(&r, "dx", &R_POSITIVE, REQUIRED, &c->dx) ||
-         num(&r, "h_over_dx", &R_H_OVER_DX, h_default, &c->h_over_dx) ||
-         read_lattice_origin(&r, c) ||
-         sub(root, "time", TIME_KEYS, &t) || num(&t, "end", &R_POSITIVE, REQUIRED, &c->t_end) ||
-         num(&t, "cfl", &R_CFL, gd ? 0.25 : 1.0, &c->cfl) ||
-         lnum(&t, "max_steps", &R_COUNT, 0, &c->max_steps) ||
-         sub(root, "output", OUTPUT_KEYS, &o) ||
-         num(&o, "interval", &R_NONNEGATIVE, 0, &c->output_interval) ||
-         num(&o, "stats_interval", &R_POSITIVE, c->t_end / 100, &c->stats_interval) ||
-         num(&o, "probes_interval", &R_POSITIVE, c->stats_interval, &c->probes_interval) ||
-         num(&o, "progress_interval", &R_POSITIVE, 10, &c->progress_interval) ||
-         num(&o, "checkpoint_interval", &R_NONNEGATIVE, 0, &c->checkpoint_interval);
-}
-
-static int read_contents(const struct map *root, struct case_def *c) {
-  struct map d;
-  return sub(root, "domain", BOX_KEYS, &d) || corners(&d, c->domain_min, c->domain_max) ||
-         read_list(root, "phases", 1, CASE_MAX_PHASES, "phases", PHASE_KEYS, read_phase, c,
-                   &c->n_phases) ||
-         read_list(root, "fluids", 0, CASE_MAX_REGIONS, "fluid regions", FLUID_KEYS, read_fluid,
-                   c, &c->n_fluids) ||
-         read_list(root, "walls", 0, CASE_MAX_WALLS, "walls", WALL_KEYS, read_wall, c,
-                   &c->n_walls) ||
-         read_list(root, "probes", 0, CASE_MAX_PROBES, "probes", PROBE_KEYS, read_probe, c,
-                   &c->n_probes);
-}
-
-/* Default maximum expected velocity: the c0 = 10 U_max rule of paper 000 read backwards, from
- * the largest sound speed of the liquids (of all phases when there is no liquid). */
-static double default_u_max(const struct case_def *c) {
-  double c_liquid = 0, c_any = 0;
-  for (int i = 0; i < c->n_phases; i++) {
-    c_any = fmax(c_any, c->phases[i].c0);
-    if (c->phases[i].incompressible) c_liquid = fmax(c_liquid, c->phases[i].c0);
-  }
-  return (c_liquid > 0 ? c_liquid : c_any) / 10.0;
-}
-
-static int read_physics(const struct map *root, struct case_def *c) {
-  struct map ph;
-  int shifting, tic, fs, form, limit, iface_p, iface_visc, spc_model, diss;
-  int plus = c->scheme == SCHEME_DELTA_PLUS;   /* the others: no shifting, TIC or damper (papers 001-004) */
-  int gd = c->scheme == SCHEME_GENERALIZED_DISSIPATION;   /* paper 004: delta 0.5, physical viscosity only */
-  int spc = c->scheme == SCHEME_SAME_PHASE_CONTINUITY;     /* paper 003: alpha_w = 0.05 */
-  /* viscosity harmonic across the phases (004 Eq. 10, 002 Eqs. 6-9, 003 Eq. 21) */
-  int coupled = gd || spc || c->scheme == SCHEME_RIEMANN;
-  double mode;
-  if (sub(root, "physics", PHYSICS_KEYS, &ph) ||
-      num(&ph, "delta", &R_NONNEGATIVE, gd ? 0.5 : 0.1, &c->delta) ||
-      num(&ph, "artificial_viscosity", &R_NONNEGATIVE, gd ? 0.0 : spc ? 0.05 : 0.1, &c->alpha) ||
-      num(&ph, "acoustic_damper", &R_NONNEGATIVE, plus ? 10 : 0, &c->acoustic_damper) ||
-      choice(&ph, "shifting", SHIFTING_NAMES, plus ? SHIFTING_CONSISTENT : SHIFTING_NONE, &shifting) ||
-      num(&ph, "u_max", &R_POSITIVE, default_u_max(c), &c->u_max) ||
-      choice(&ph, "tensile_control", BOOL_NAMES, plus, &tic) ||
-      choice(&ph, "free_surface", FREE_SURFACE_NAMES, FREE_SURFACE_AUTO, &fs) ||
-      num(&ph, "surface_band", &R_NONNEGATIVE, 2.0, &c->surface_band) ||
-      num(&ph, "interface_mode", &R_MODE, 4, &mode) ||
-      choice(&ph, "damper_form", DAMPER_NAMES, DAMPER_SYMMETRIC, &form) ||
-      num(&ph, "interface_sharpness", &R_NONNEGATIVE, 0, &c->interface_sharpness) ||
-      choice(&ph, "limit_surface_shifting", BOOL_NAMES, 0, &limit) ||
-      choice(&ph, "interface_pressure", IFACE_P_NAMES, IFACE_P_SUM, &iface_p) ||
-      choice(&ph, "interface_viscosity", IFACE_VISC_NAMES, coupled ? IFACE_VISC_HARMONIC : IFACE_VISC_NONE, &iface_visc) ||
-      num(&ph, "surface_tension", &R_NONNEGATIVE, 0, &c->surface_tension) ||
-      num(&ph, "wall_guard", &R_NONNEGATIVE, WALL_GUARD_DX, &c->wall_guard) ||
-      choice(&ph, "spc_model", SPC_MODEL_NAMES, SPC_PRESENT, &spc_model) ||
-      choice(&ph, "dissipation_form", DISSIPATION_NAMES, DISSIPATION_CONSISTENT, &diss))
-    return 1;
-  c->dissipation_form = (enum dissipation_form)diss;
-  c->shifting = (enum shifting_kind)shifting;
-  c->tensile_control = tic;
-  c->free_surface = (enum free_surface_mode)fs;
-  c->interface_mode = (int)mode;
-  c->damper_form = (enum damper_form)form;
-  c->limit_surface_shifting = limit;
-  c->interface_pressure = (enum interface_pressure)iface_p;
-  c->interface_viscosity = (enum interface_viscosity)iface_visc;
-  c->spc_model = (enum spc_model)spc_model;
-  return 0;
-}
-
-/* time.dt_min, read after the phases: its default is a fraction of the acoustic step. */
-static int read_dt_min(const struct map *root, struct case_def *c) {
-  struct map t;
-  double c_max = 0;
-  for (int i = 0; i < c->n_phases; i++) c_max = fmax(c_max, c->phases[i].c0);
-  return sub(root, "time", TIME_KEYS, &t) ||
-         num(&t, "dt_min", &R_POSITIVE, DT_MIN_FRACTION * c->cfl * c->h_over_dx * c->dx / c_max,
-             &c->dt_min);
-}
-
-static int read_options(const struct map *root, struct case_def *c) {
-  struct map in, pa;
-  int pressure;
-  if (read_dt_min(root, c) || read_physics(root, c) || sub(root, "initial", INITIAL_KEYS, &in) ||
-      choice(&in, "pressure", PRESSURE_NAMES, INIT_PRESSURE_HYDROSTATIC, &pressure) ||
-      sub(root, "parallel", PARALLEL_KEYS, &pa) ||
-      num(&pa, "repartition_threshold", &R_POSITIVE, 0.1, &c->repartition_threshold) ||
-      lnum(&pa, "repartition_every", &R_COUNT, 0, &c->repartition_every))
-    return 1;
-  c->initial_pressure = (enum init_pressure)pressure;
-  return 0;
-}
-
-static int read_case(const struct ynode *root, struct case_def *c, char *err, size_t err_len) {
-  struct ld ld = {err, err_len, 2};
-  struct map m;
-  return open_map(&ld, root, root, "", ROOT_KEYS, &m) || read_top(&m, c) || read_run(&m, c) ||
-         read_contents(&m, c) || read_options(&m, c);
-}
-
-/* Rewrite the message in err on one printable line: control characters (a newline inside a
- * value or key shown in it) become \n, \t or \xNN; the end is cut at err_len. */
-static void one_line(char *err, size_t err_len) {
-  char buf[4096];
-  size_t k = 0;
-  for (const unsigned char *c = (const unsigned char *)err; *c && k + 5 < sizeof buf; c++) {
-    if (*c >= 0x20 && *c != 0x7f)
-      buf[k++] = (char)*c;
-    else
-      k += (size_t)snprintf(buf + k, 5, *c == '\n' ? "\\n" : *c == '\t' ? "\\t" : "\\x%02x", *c);
-  }
-  buf[k] = '\0';
-  snprintf(err, err_len, "%s", buf);
-}
-
-/* Load, override, validate and resolve the case text into c. */
-int case_load_string(const char *text, size_t len, const char *source, int n_sets,
-                     char *const *sets, struct case_def *c, char *err, size_t err_len) {
-  memset(c, 0, sizeof *c);
-  if (strlen(source) >= sizeof c->source_file) {
-    if (err_len) snprintf(err, err_len, "%s: path too long, expected at most %zu characters",
-                          source, sizeof c->source_file - 1);
-    return 1;
-  }
-  snprintf(c->source_file, sizeof c->source_file, "%s", source);
-  struct ynode *root = ytree_parse(text, len, source, 0, err, err_len);
-  int rc = root ? 0 : 1;
-  for (int i = 0; rc == 0 && i < n_sets; i++) rc = ytree_set(root, sets[i], i + 1, err, err_len);
-  if (rc == 0) rc = read_case(root, c, err, err_len);
-  ytree_free(root);
-  if (rc && err_len) one_line(err, err_len);
-  return rc;
-}
-
-/* What a file of mode st_mode is when it is not a regular file ("a directory"), or NULL. */
-static const char *not_regular(mode_t mode) {
-  return S_ISREG(mode) ? NULL : S_ISDIR(mode) ? "a directory" : S_ISFIFO(mode) ? "a FIFO (named pipe)"
-         : S_ISCHR(mode) ? "a character device" : S_ISBLK(mode) ? "a block device"
-         : S_ISSOCK(mode) ? "a socket" : "not a regular file";
-}
-
-const char *case_file_not_regular(const char *path) {
-  struct stat st;
-  return stat(path, &st) == 0 ? not_regular(st.st_mode) : NULL;
-}
-
-/* The regular file at path opened for reading, or NULL with a message. Its type is asked before
- * it is opened, and again of the open file (which may have been replaced in between): opening a
- * FIFO would wait for a writer, reading a device might never end. */
-static FILE *open_regular(const char *path, char *err, size_t err_len) {
-  struct stat st;
-  const char *kind = NULL;
-  int fd = -1;
-  if (stat(path, &st) == 0 && !(kind = not_regular(st.st_mode)) &&
-      (fd = open(path, O_RDONLY | O_NONBLOCK | O_CLOEXEC)) >= 0 && fstat(fd, &st) == 0)
-    kind = not_regular(st.st_mode);
-  FILE *f = fd >= 0 && !kind ? fdopen(fd, "rb") : NULL;
-  if (f) return f;
-  if (kind) snprintf(err, err_len, "%s: cannot read the file: it is %s, expected a regular file", path, kind);
-  else snprintf(err, err_len, "%s: cannot open the file: %s", path, strerror(errno));
-  if (fd >= 0) close(fd);
-  return NULL;
-}
-
-/* The whole file at path (at most CASE_MAX_FILE_BYTES) in a new buffer, its size in *len; NULL
- * with a message on failure. */
-static char *read_file(const char *path, size_t *len, char *err, size_t err_len) {
-  FILE *f = open_regular(path, err, err_len);
-  if (!f) return NULL;
-  char *text = mem_alloc(CASE_MAX_FILE_BYTES + 1, "the case file's text");
-  *len = fread(text, 1, CASE_MAX_FILE_BYTES + 1, f);
-  if (ferror(f))
-    snprintf(err, err_len, "%s: cannot read the file: %s", path, strerror(errno));
-  else if (*len > CASE_MAX_FILE_BYTES)
-    snprintf(err, err_len, "%s: larger than %d bytes, expected a case file of at most that size",
-             path, CASE_MAX_FILE_BYTES);
-  int ok = !ferror(f) && *len <= CASE_MAX_FILE_BYTES;
-  fclose(f);
-  if (ok) return text;
-  free(text);
-  return NULL;
-}
-
-/* Load, override, validate and resolve a case file into c. */
-int case_load(const char *path, int n_sets, char *const *sets, struct case_def *c, char *err,
-              size_t err_len) {
-  size_t len = 0;
-  char *text = read_file(path, &len, err, err_len);
-  memset(c, 0, sizeof *c);
-  if (!text && err_len) one_line(err, err_len);
-  if (!text) return 1;
-  int rc = case_load_string(text, len, path, n_sets, sets, c, err, err_len);
-  free(text);
-  return rc;
-}
-
-/* Column suffixes of an integral probe. */
-static const char *const INTEGRAL_COLUMNS[] = {"volume", "kinetic", "potential", "com_x", "com_y", "com_z"};
-
-int case_probe_column(const struct case_def *c, int k, int col, char *buf, size_t len) {
-  const struct probe *p = &c->probes[k];
-  int n = p->kind == PROBE_INTEGRAL ? 3 + c->dimension : 1;
-  if (buf && p->kind == PROBE_INTEGRAL) snprintf(buf, len, "%s_%s", p->name, INTEGRAL_COLUMNS[col]);
-  else if (buf) snprintf(buf, len, "%s", p->name);
-  return n;
-}
-
 /* ---- writing ---- */
 
 /* The shortest of %.15g, %.16g, %.17g that reads back as x exactly. */
@@ -1135,38 +919,6 @@ static void put_shape(FILE *f, const char *indent, const char *inner, const stru
 static void put_list_key(FILE *f, const char *key, int n) {
   fprintf(f, "%s:%s\n", key, n ? "" : " []");
 }
-
-static void put_head(FILE *f, const struct case_def *c) {
-  int dim = c->dimension;
-  put_str(f, "", "name", c->name);
-  put_str(f, "", "description", c->description);
-  put_long(f, "", "dimension", dim);
-  put_word(f, "", "scheme", SCHEME_NAMES[c->scheme]);
-  put_word(f, "", "kernel", KERNEL_NAMES[c->kernel]);
-  fputs("resolution:\n", f);
-  put_num(f, "  ", "dx", c->dx);
-  put_num(f, "  ", "h_over_dx", c->h_over_dx);
-  if (c->has_lattice_origin) put_vec(f, "  ", "origin", c->lattice_origin, dim);
-  put_vec(f, "", "gravity", c->gravity, dim);
-  fputs("potential:\n", f);
-  put_num(f, "  ", "omega", c->potential_omega);
-  put_vec(f, "  ", "centre", c->potential_centre, dim);
-  fputs("time:\n", f);
-  put_num(f, "  ", "end", c->t_end);
-  put_num(f, "  ", "cfl", c->cfl);
-  put_long(f, "  ", "max_steps", c->max_steps);
-  put_num(f, "  ", "dt_min", c->dt_min);
-  fputs("output:\n", f);
-  put_num(f, "  ", "interval", c->output_interval);
-  put_num(f, "  ", "stats_interval", c->stats_interval);
-  put_num(f, "  ", "probes_interval", c->probes_interval);
-  put_num(f, "  ", "progress_interval", c->progress_interval);
-  put_num(f, "  ", "checkpoint_interval", c->checkpoint_interval);
-  fputs("domain:\n", f);
-  put_vec(f, "  ", "min", c->domain_min, dim);
-  put_vec(f, "  ", "max", c->domain_max, dim);
-}
-
 /* One motion law under key (nothing when inactive). */
 static void put_law(FILE *f, const char *key, const struct motion_law *l, int vector, int dim) {
   if (!l->active) return;
@@ -1205,43 +957,35 @@ static void put_motion(FILE *f, const struct wall_motion *m, int dim) {
   if (m->rotation.active) put_vec(f, "        ", "centre", m->centre, dim);
 }
 
-static void put_bodies(FILE *f, const struct case_def *c) {
-  put_list_key(f, "phases", c->n_phases);
-  for (int i = 0; i < c->n_phases; i++) {
-    const struct phase *p = &c->phases[i];
-    put_str(f, "  - ", "name", p->name);
-    put_num(f, "    ", "rho0", p->rho0);
-    put_num(f, "    ", "c0", p->c0);
-    put_num(f, "    ", "gamma", p->gamma);
-    put_num(f, "    ", "p_background", p->p_background);
-    put_num(f, "    ", "viscosity", p->viscosity);
-    put_word(f, "    ", "incompressible", BOOL_NAMES[p->incompressible != 0]);
-    put_vec(f, "    ", "density_band", p->density_band, 2);
+
+/* Fluid region i (the list's own writer). */
+static void put_fluid(FILE *f, const struct case_def *c, int i) {
+  const struct fluid_region *r = &c->fluids[i];
+  put_str(f, "  - ", "phase", c->phases[r->phase].name);
+  put_shape(f, "    ", "      ", &r->shape, c->dimension);
+  put_vec(f, "    ", "velocity", r->velocity, c->dimension);
+  fputs("    velocity_gradient: [", f);
+  for (int a = 0; a < c->dimension; a++) {
+    fputs(a ? ", " : "", f);
+    put_flow_vec(f, r->velocity_gradient[a], c->dimension);
   }
-  put_list_key(f, "fluids", c->n_fluids);
-  for (int i = 0; i < c->n_fluids; i++) {
-    put_str(f, "  - ", "phase", c->phases[c->fluids[i].phase].name);
-    put_shape(f, "    ", "      ", &c->fluids[i].shape, c->dimension);
-    put_vec(f, "    ", "velocity", c->fluids[i].velocity, c->dimension);
-    fputs("    velocity_gradient: [", f);
-    for (int a = 0; a < c->dimension; a++) {
-      fputs(a ? ", " : "", f);
-      put_flow_vec(f, c->fluids[i].velocity_gradient[a], c->dimension);
-    }
-    fputs("]\n", f);
-    put_velocity_mode(f, &c->fluids[i].mode);
-  }
-  put_list_key(f, "walls", c->n_walls);
-  for (int i = 0; i < c->n_walls; i++) {
-    put_shape(f, "  - ", "      ", &c->walls[i].shape, c->dimension);
-    put_word(f, "    ", "slip", SLIP_NAMES[c->walls[i].slip]);
-    put_word(f, "    ", "fluid_side", SIDE_NAMES[c->walls[i].fluid_side]);
-    if (c->walls[i].moving) put_motion(f, &c->walls[i].motion, c->dimension);
-  }
+  fputs("]\n", f);
+  put_velocity_mode(f, &r->mode);
 }
 
-/* The keys of one probe after its name. */
-static void put_probe(FILE *f, const struct probe *p, const struct case_def *c) {
+/* Wall i (the list's own writer). */
+static void put_wall(FILE *f, const struct case_def *c, int i) {
+  const struct wall *w = &c->walls[i];
+  put_shape(f, "  - ", "      ", &w->shape, c->dimension);
+  put_word(f, "    ", "slip", SLIP_NAMES[w->slip]);
+  put_word(f, "    ", "fluid_side", SIDE_NAMES[w->fluid_side]);
+  if (w->moving) put_motion(f, &w->motion, c->dimension);
+}
+
+/* Probe i (the list's own writer): its name, kind and the keys of its kind. */
+static void put_probe(FILE *f, const struct case_def *c, int i) {
+  const struct probe *p = &c->probes[i];
+  put_str(f, "  - ", "name", p->name);
   put_word(f, "    ", "kind", PROBE_KIND_NAMES[p->kind]);
   if (p->kind != PROBE_INTEGRAL) put_vec(f, "    ", "position", p->position, c->dimension);
   if (p->kind != PROBE_PRESSURE) {
@@ -1253,37 +997,515 @@ static void put_probe(FILE *f, const struct probe *p, const struct case_def *c) 
   if (p->diameter > 0) put_vec(f, "    ", "axis", p->axis, c->dimension);
 }
 
-static void put_tail(FILE *f, const struct case_def *c) {
-  fputs("physics:\n", f);
-  put_num(f, "  ", "delta", c->delta);
-  put_num(f, "  ", "artificial_viscosity", c->alpha);
-  put_num(f, "  ", "acoustic_damper", c->acoustic_damper);
-  put_word(f, "  ", "shifting", SHIFTING_NAMES[c->shifting]);
-  put_num(f, "  ", "u_max", c->u_max);
-  put_word(f, "  ", "tensile_control", BOOL_NAMES[c->tensile_control != 0]);
-  put_word(f, "  ", "free_surface", FREE_SURFACE_NAMES[c->free_surface]);
-  put_num(f, "  ", "surface_band", c->surface_band);
-  put_long(f, "  ", "interface_mode", c->interface_mode);
-  put_word(f, "  ", "damper_form", DAMPER_NAMES[c->damper_form]);
-  put_num(f, "  ", "interface_sharpness", c->interface_sharpness);
-  put_word(f, "  ", "limit_surface_shifting", BOOL_NAMES[c->limit_surface_shifting != 0]);
-  put_word(f, "  ", "interface_pressure", IFACE_P_NAMES[c->interface_pressure]);
-  put_word(f, "  ", "interface_viscosity", IFACE_VISC_NAMES[c->interface_viscosity]);
-  put_num(f, "  ", "surface_tension", c->surface_tension);
-  put_num(f, "  ", "wall_guard", c->wall_guard);
-  put_word(f, "  ", "spc_model", SPC_MODEL_NAMES[c->spc_model]);
-  if (c->scheme == SCHEME_GENERALIZED_DISSIPATION)   /* the other schemes' files stay as they were */
-    put_word(f, "  ", "dissipation_form", DISSIPATION_NAMES[c->dissipation_form]);
-  fputs("initial:\n", f);
-  put_word(f, "  ", "pressure", PRESSURE_NAMES[c->initial_pressure]);
-  put_list_key(f, "probes", c->n_probes);
-  for (int i = 0; i < c->n_probes; i++) {
-    put_str(f, "  - ", "name", c->probes[i].name);
-    put_probe(f, &c->probes[i], c);
+/* ---- defaults computed from the keys read before ---- */
+
+static int is_gd(const struct case_def *c) { return c->scheme == SCHEME_GENERALIZED_DISSIPATION; }
+static int is_plus(const struct case_def *c) { return c->scheme == SCHEME_DELTA_PLUS; }
+
+/* resolution.h_over_dx: by kernel; paper 004 (generalized-dissipation): h = 1.1 dx. */
+static void h_over_dx_default(const struct case_def *c, const void *item, double *out) {
+  (void)item;
+  out[0] = c->kernel == KERNEL_GAUSSIAN ? (is_gd(c) ? 1.1 : 1.33) : 2.0;
+}
+
+/* time.cfl: paper 004's dt = 0.25 h / (c + |u|). */
+static void cfl_default(const struct case_def *c, const void *item, double *out) {
+  (void)item;
+  out[0] = is_gd(c) ? 0.25 : 1.0;
+}
+
+/* time.dt_min: a fraction of the acoustic step CFL h / max c0 (needs the phases). */
+static void dt_min_default(const struct case_def *c, const void *item, double *out) {
+  double c_max = 0;
+  (void)item;
+  for (int i = 0; i < c->n_phases; i++) c_max = fmax(c_max, c->phases[i].c0);
+  out[0] = DT_MIN_FRACTION * c->cfl * c->h_over_dx * c->dx / c_max;
+}
+
+static void stats_interval_default(const struct case_def *c, const void *item, double *out) {
+  (void)item;
+  out[0] = c->t_end / 100;
+}
+
+static void probes_interval_default(const struct case_def *c, const void *item, double *out) {
+  (void)item;
+  out[0] = c->stats_interval;
+}
+
+/* physics.delta: paper 004 uses 0.5. */
+static void delta_default(const struct case_def *c, const void *item, double *out) {
+  (void)item;
+  out[0] = is_gd(c) ? 0.5 : 0.1;
+}
+
+/* physics.artificial_viscosity: paper 004 physical viscosity only, paper 003 alpha_w = 0.05. */
+static void alpha_default(const struct case_def *c, const void *item, double *out) {
+  (void)item;
+  out[0] = is_gd(c) ? 0.0 : c->scheme == SCHEME_SAME_PHASE_CONTINUITY ? 0.05 : 0.1;
+}
+
+/* The terms of paper 000 that the other schemes (papers 001-004) do without: the acoustic
+ * damper, consistent shifting, tensile control. */
+static void damper_default(const struct case_def *c, const void *item, double *out) {
+  (void)item;
+  out[0] = is_plus(c) ? 10 : 0;
+}
+
+static void shifting_default(const struct case_def *c, const void *item, double *out) {
+  (void)item;
+  out[0] = is_plus(c) ? SHIFTING_CONSISTENT : SHIFTING_NONE;
+}
+
+static void tensile_default(const struct case_def *c, const void *item, double *out) {
+  (void)item;
+  out[0] = is_plus(c);
+}
+
+/* physics.u_max: the c0 = 10 U_max rule of paper 000 read backwards, from the largest sound
+ * speed of the liquids (of all phases when there is no liquid). */
+static void u_max_default(const struct case_def *c, const void *item, double *out) {
+  double c_liquid = 0, c_any = 0;
+  (void)item;
+  for (int i = 0; i < c->n_phases; i++) {
+    c_any = fmax(c_any, c->phases[i].c0);
+    if (c->phases[i].incompressible) c_liquid = fmax(c_liquid, c->phases[i].c0);
   }
-  fputs("parallel:\n", f);
-  put_num(f, "  ", "repartition_threshold", c->repartition_threshold);
-  put_long(f, "  ", "repartition_every", c->repartition_every);
+  out[0] = (c_liquid > 0 ? c_liquid : c_any) / 10.0;
+}
+
+/* physics.interface_viscosity: harmonic across the phases in papers 002-004 (004 Eq. 10, 002
+ * Eqs. 6-9, 003 Eq. 21). */
+static void interface_viscosity_default(const struct case_def *c, const void *item, double *out) {
+  (void)item;
+  out[0] = is_gd(c) || c->scheme == SCHEME_SAME_PHASE_CONTINUITY || c->scheme == SCHEME_RIEMANN
+               ? IFACE_VISC_HARMONIC : IFACE_VISC_NONE;
+}
+
+/* phases.N.density_band: by the phase's incompressible, read before it. */
+static void band_default(const struct case_def *c, const void *item, double *out) {
+  const struct phase *p = item;
+  (void)c;
+  out[0] = p->incompressible ? LIQUID_BAND[0] : GAS_BAND[0];
+  out[1] = p->incompressible ? LIQUID_BAND[1] : GAS_BAND[1];
+}
+
+/* physics.dissipation_form is written for its scheme only (the other schemes' files stay as
+ * they were before the key existed). */
+static int dissipation_written(const struct case_def *c) { return is_gd(c); }
+
+/* The vectors after dimension have its length. */
+static int dimension_read(const struct map *m, const struct case_def *c, int i) {
+  (void)i;
+  m->ld->dim = c->dimension;
+  return 0;
+}
+
+/* domain.max > domain.min. */
+static int domain_ordered(const struct map *m, const struct case_def *c, int i) {
+  (void)i;
+  return ordered(m, c->domain_min, c->domain_max);
+}
+
+/* phases.N.name differs from the earlier phases' names. */
+static int phase_name_unique(const struct map *m, const struct case_def *c, int i) {
+  return unique_name(m, c->phases[0].name, sizeof c->phases[0], i);
+}
+
+/* ---- the key tables ---- */
+
+#define CASE_KEY(sec, name, kind, member, ...)                                                    \
+  {.section = sec, .key = name, .type = kind, .offset = offsetof(struct case_def, member), __VA_ARGS__}
+#define PHASE_KEY(name, kind, member, ...)                                                        \
+  {.section = "", .key = name, .type = kind, .offset = offsetof(struct phase, member), __VA_ARGS__}
+#define TEXT_SIZE(type, member) (sizeof ((type *)0)->member)
+_Static_assert(sizeof(enum scheme_kind) == sizeof(int), "choices are read and written as int");
+
+/* The keys of a phase, in the order they are read and written. */
+static const struct case_key PHASE_ITEM_KEYS[] = {
+    PHASE_KEY("name", KEY_TEXT, name, .flags = KEY_REQUIRED, .punct = NAME_PUNCT,
+              .size = TEXT_SIZE(struct phase, name), .check = phase_name_unique,
+              .doc = "phase name, unique; `fluids.N.phase` refers to it, `stats.csv` columns are named after it"),
+    PHASE_KEY("rho0", KEY_NUMBER, rho0, .flags = KEY_REQUIRED, .rule = &R_POSITIVE,
+              .doc = "reference density ρ0 [kg/m³]"),
+    PHASE_KEY("c0", KEY_NUMBER, c0, .flags = KEY_REQUIRED, .rule = &R_POSITIVE,
+              .doc = "numerical sound speed c0 [m/s]"),
+    PHASE_KEY("gamma", KEY_NUMBER, gamma, .rule = &R_POSITIVE, .def = {7},
+              .doc = "exponent γ of the Tait equation p = ρ0c0²/γ [(ρ/ρ0)^γ − 1] + p_b [-]"),
+    PHASE_KEY("p_background", KEY_NUMBER, p_background, .rule = &R_ANY,
+              .doc = "background pressure p_b [Pa]"),
+    PHASE_KEY("viscosity", KEY_NUMBER, viscosity, .rule = &R_NONNEGATIVE,
+              .doc = "dynamic viscosity μ [Pa s], a laminar term added to the artificial viscosity"),
+    PHASE_KEY("incompressible", KEY_BOOL, incompressible,
+              .doc = "`true`: a liquid (it gets the acoustic damper; its c0 sets the default `u_max`), `false`: a gas"),
+    PHASE_KEY("density_band", KEY_BAND, density_band, .computed = band_default,
+              .def_doc = "`[0.5, 2]` for a liquid, `[0.1, 10]` for a gas",
+              .doc = "a fluid particle of the phase whose ρ/ρ0 leaves the band stops the run as unstable (status 2) [-]"),
+};
+
+static const struct list_def PHASES = {
+    .what = "phases", .lo = 1, .hi = CASE_MAX_PHASES, .items = offsetof(struct case_def, phases),
+    .item_size = sizeof(struct phase), .keys = PHASE_ITEM_KEYS,
+    .n_keys = sizeof PHASE_ITEM_KEYS / sizeof PHASE_ITEM_KEYS[0]};
+static const struct list_def FLUIDS = {.what = "fluid regions", .hi = CASE_MAX_REGIONS,
+                                       .allowed = FLUID_KEYS, .read = read_fluid, .put = put_fluid};
+static const struct list_def WALLS = {.what = "walls", .hi = CASE_MAX_WALLS, .allowed = WALL_KEYS,
+                                      .read = read_wall, .put = put_wall};
+static const struct list_def PROBES = {.what = "probes", .hi = CASE_MAX_PROBES, .allowed = PROBE_KEYS,
+                                       .read = read_probe, .put = put_probe};
+
+/* The keys of a case, in the order they are written (and read, KEY_LATE aside); the allowed
+ * keys of the root and of each section follow from it. */
+static const struct case_key CASE_KEYS[] = {
+    CASE_KEY("", "name", KEY_TEXT, name, .flags = KEY_REQUIRED, .punct = NAME_PUNCT,
+             .size = TEXT_SIZE(struct case_def, name),
+             .doc = "case name; the default output folder is `runs/<name>`"),
+    CASE_KEY("", "description", KEY_TEXT, description, .size = TEXT_SIZE(struct case_def, description),
+             .doc = "free text, copied into `config.yaml` and the snapshots"),
+    CASE_KEY("", "dimension", KEY_INTEGER, dimension, .flags = KEY_REQUIRED, .rule = &R_DIMENSION,
+             .check = dimension_read, .doc = "spatial dimension"),
+    CASE_KEY("", "scheme", KEY_CHOICE, scheme, .names = SCHEME_NAMES, .def = {SCHEME_DELTA_PLUS},
+             .doc = "the scheme (see below)"),
+    CASE_KEY("", "kernel", KEY_CHOICE, kernel, .names = KERNEL_NAMES, .def = {KERNEL_GAUSSIAN},
+             .doc = "Gaussian cut at 3h, or Wendland C2 with support 2h"),
+    CASE_KEY("resolution", "dx", KEY_NUMBER, dx, .flags = KEY_REQUIRED, .rule = &R_POSITIVE,
+             .doc = "initial particle spacing Δx [m]"),
+    CASE_KEY("resolution", "h_over_dx", KEY_NUMBER, h_over_dx, .rule = &R_H_OVER_DX,
+             .computed = h_over_dx_default,
+             .def_doc = "`1.33` (gaussian; `1.1` with generalized-dissipation), `2.0` (wendland-c2)",
+             .doc = "smoothing length h / Δx [-]"),
+    CASE_KEY("resolution", "origin", KEY_VECTOR, lattice_origin, .flags = KEY_GIVEN,
+             .given = offsetof(struct case_def, has_lattice_origin), .def_doc = "absent",
+             .doc = "one lattice for every fluid region, nodes at origin + (i + ½)Δx (see below) [m]"),
+    CASE_KEY("", "gravity", KEY_VECTOR, gravity, .doc = "gravity, e.g. `[0, -9.81]` [m/s²]"),
+    CASE_KEY("potential", "omega", KEY_NUMBER, potential_omega, .rule = &R_NONNEGATIVE,
+             .doc = "Ω of the quadratic potential ½Ω²\\|r − r_c\\|² (body force −Ω²(r − r_c)); `0`: none [1/s]"),
+    CASE_KEY("potential", "centre", KEY_VECTOR, potential_centre, .doc = "centre r_c of the potential [m]"),
+    CASE_KEY("time", "end", KEY_NUMBER, t_end, .flags = KEY_REQUIRED, .rule = &R_POSITIVE,
+             .doc = "end time [s]"),
+    CASE_KEY("time", "cfl", KEY_NUMBER, cfl, .rule = &R_CFL, .computed = cfl_default,
+             .def_doc = "`1.0` (`0.25` with generalized-dissipation)",
+             .doc = "factor of the time-step limits (section 5) [-]"),
+    CASE_KEY("time", "max_steps", KEY_COUNT, max_steps, .rule = &R_COUNT,
+             .doc = "stop after this many steps; `0`: no limit"),
+    CASE_KEY("time", "dt_min", KEY_NUMBER, dt_min, .flags = KEY_LATE, .rule = &R_POSITIVE,
+             .computed = dt_min_default, .def_doc = "10⁻⁶ · CFL · h / max c0",
+             .doc = "a time step below this stops the run as unstable (status 2) [s]"),
+    CASE_KEY("output", "interval", KEY_NUMBER, output_interval, .rule = &R_NONNEGATIVE,
+             .doc = "snapshot interval; `0`: the first and last snapshots only [s]"),
+    CASE_KEY("output", "stats_interval", KEY_NUMBER, stats_interval, .rule = &R_POSITIVE,
+             .computed = stats_interval_default, .def_doc = "`time.end` / 100",
+             .doc = "`stats.csv` interval [s]"),
+    CASE_KEY("output", "probes_interval", KEY_NUMBER, probes_interval, .rule = &R_POSITIVE,
+             .computed = probes_interval_default, .def_doc = "`output.stats_interval`",
+             .doc = "`probes.csv` interval [s]"),
+    CASE_KEY("output", "progress_interval", KEY_NUMBER, progress_interval, .rule = &R_POSITIVE,
+             .def = {10}, .doc = "wall-clock time between progress lines [s]"),
+    CASE_KEY("output", "checkpoint_interval", KEY_NUMBER, checkpoint_interval, .rule = &R_NONNEGATIVE,
+             .doc = "simulated time between checkpoints (section 4.4); `0`: at the end of the run (and on a stop signal) only [s]"),
+    CASE_KEY("domain", "min", KEY_VECTOR, domain_min, .flags = KEY_REQUIRED,
+             .doc = "lower corner of the box of the cell grid [m]"),
+    CASE_KEY("domain", "max", KEY_VECTOR, domain_max, .flags = KEY_REQUIRED, .check = domain_ordered,
+             .doc = "upper corner of the box of the cell grid, above `min` in every component [m]"),
+    CASE_KEY("", "phases", KEY_LIST, n_phases, .flags = KEY_REQUIRED, .list = &PHASES,
+             .doc = "the fluids"),
+    CASE_KEY("", "fluids", KEY_LIST, n_fluids, .list = &FLUIDS,
+             .doc = "regions filled with particles, in this order (section 2.2)"),
+    CASE_KEY("", "walls", KEY_LIST, n_walls, .list = &WALLS, .doc = "walls of ghost particles (section 2.2)"),
+    CASE_KEY("physics", "delta", KEY_NUMBER, delta, .rule = &R_NONNEGATIVE, .computed = delta_default,
+             .def_doc = "`0.1` (`0.5` with generalized-dissipation)", .doc = "δ of the density diffusion [-]"),
+    CASE_KEY("physics", "artificial_viscosity", KEY_NUMBER, alpha, .rule = &R_NONNEGATIVE,
+             .computed = alpha_default,
+             .def_doc = "`0.1` (`0.05` with same-phase-continuity, `0` with generalized-dissipation)",
+             .doc = "α of the artificial viscosity [-]"),
+    CASE_KEY("physics", "acoustic_damper", KEY_NUMBER, acoustic_damper, .rule = &R_NONNEGATIVE,
+             .computed = damper_default, .def_doc = "`10` with delta-plus, else `0`",
+             .doc = "α2 of the acoustic damper (liquids only) [-]"),
+    CASE_KEY("physics", "shifting", KEY_CHOICE, shifting, .names = SHIFTING_NAMES,
+             .computed = shifting_default, .def_doc = "`consistent` with delta-plus, else `none`",
+             .doc = "particle shifting (see below)"),
+    CASE_KEY("physics", "u_max", KEY_NUMBER, u_max, .rule = &R_POSITIVE, .computed = u_max_default,
+             .def_doc = "largest c0 of the liquids (of all phases without a liquid) / 10",
+             .doc = "maximum expected velocity U_max of the shifting limit (riemann: its reference speed) [m/s]"),
+    CASE_KEY("physics", "tensile_control", KEY_BOOL, tensile_control, .computed = tensile_default,
+             .def_doc = "`true` with delta-plus, else `false`",
+             .doc = "tensile instability control: p_j − p_i for p_i < 0 outside the free-surface region (paper 000 Eq. 9)"),
+    CASE_KEY("physics", "free_surface", KEY_CHOICE, free_surface, .names = FREE_SURFACE_NAMES,
+             .def = {FREE_SURFACE_AUTO}, .doc = "free-surface detection (see below)"),
+    CASE_KEY("physics", "surface_band", KEY_NUMBER, surface_band, .rule = &R_NONNEGATIVE, .def = {2.0},
+             .doc = "the free-surface region: the detected particles and every fluid particle within this many h of one [-]"),
+    CASE_KEY("physics", "interface_mode", KEY_INTEGER, interface_mode, .rule = &R_MODE, .def = {4},
+             .doc = "ε/φ/κ strategies of the shifting terms at interfaces and walls (see below)"),
+    CASE_KEY("physics", "damper_form", KEY_CHOICE, damper_form, .names = DAMPER_NAMES,
+             .def = {DAMPER_SYMMETRIC}, .doc = "form of the acoustic damper term (see below)"),
+    CASE_KEY("physics", "interface_sharpness", KEY_NUMBER, interface_sharpness, .rule = &R_NONNEGATIVE,
+             .doc = "χ of the repulsive interface force between phases (paper 000 Eq. 20); `0`: off [-]"),
+    CASE_KEY("physics", "limit_surface_shifting", KEY_BOOL, limit_surface_shifting,
+             .doc = "also apply the limit \\|δu\\| ≤ 0.5 U_max in the free-surface region (paper 000 exempts it)"),
+    CASE_KEY("physics", "interface_pressure", KEY_CHOICE, interface_pressure, .names = IFACE_P_NAMES,
+             .def = {IFACE_P_SUM}, .doc = "the other-phase pressure in the momentum pair sum (see below)"),
+    CASE_KEY("physics", "interface_viscosity", KEY_CHOICE, interface_viscosity, .names = IFACE_VISC_NAMES,
+             .computed = interface_viscosity_default,
+             .def_doc = "`harmonic` with generalized-dissipation, riemann and same-phase-continuity, else `none`",
+             .doc = "the laminar viscosity between phases (see below)"),
+    CASE_KEY("physics", "surface_tension", KEY_NUMBER, surface_tension, .rule = &R_NONNEGATIVE,
+             .doc = "σ between the fluid phases (see below); `0`: off [N/m]"),
+    CASE_KEY("physics", "wall_guard", KEY_NUMBER, wall_guard, .rule = &R_NONNEGATIVE, .def = {WALL_GUARD_DX},
+             .doc = "distance from a wall within which velocity into it is removed (see below); `0`: off [Δx]"),
+    CASE_KEY("physics", "spc_model", KEY_CHOICE, spc_model, .names = SPC_MODEL_NAMES, .def = {SPC_PRESENT},
+             .doc = "scheme same-phase-continuity only: paper 003's model, or its conventional baseline (see below)"),
+    CASE_KEY("physics", "dissipation_form", KEY_CHOICE, dissipation_form, .names = DISSIPATION_NAMES,
+             .def = {DISSIPATION_CONSISTENT}, .written = dissipation_written,
+             .doc = "scheme generalized-dissipation only: paper 004's Eq. 46 or its Eq. 49 as printed (see below)"),
+    CASE_KEY("initial", "pressure", KEY_CHOICE, initial_pressure, .names = PRESSURE_NAMES,
+             .def = {INIT_PRESSURE_HYDROSTATIC}, .doc = "initial pressure (see below)"),
+    CASE_KEY("", "probes", KEY_LIST, n_probes, .list = &PROBES,
+             .doc = "sensors recorded in `probes.csv` (section 2.2, section 4.3)"),
+    CASE_KEY("parallel", "repartition_threshold", KEY_NUMBER, repartition_threshold, .rule = &R_POSITIVE,
+             .def = {0.1}, .doc = "re-partition when the compute-time imbalance max/mean − 1 exceeds this (section 6.3) [-]"),
+    CASE_KEY("parallel", "repartition_every", KEY_COUNT, repartition_every, .rule = &R_COUNT,
+             .doc = "re-partition every N steps; `0`: only on imbalance"),
+};
+#define N_CASE_KEYS ((int)(sizeof CASE_KEYS / sizeof CASE_KEYS[0]))
+
+/* ---- reading by the tables ---- */
+
+#define MAX_SECTION_KEYS N_CASE_KEYS   /* no mapping has more keys than the largest table */
+_Static_assert(sizeof PHASE_ITEM_KEYS / sizeof PHASE_ITEM_KEYS[0] <= MAX_SECTION_KEYS, "room for a phase's keys");
+
+/* The allowed keys of mapping `section` of table t ("": the root, whose keys are the
+ * top-level keys and the sections) into out, NULL-terminated. */
+static const char *const *section_keys(const struct case_key *t, int n, const char *section,
+                                       const char **out) {
+  int k = 0;
+  for (int i = 0; i < n; i++) {
+    const char *name = section[0] ? t[i].key : t[i].section[0] ? t[i].section : t[i].key;
+    int seen = strcmp(t[i].section, section) != 0 && section[0];
+    for (int j = 0; j < k && !seen; j++) seen = strcmp(out[j], name) == 0;
+    if (!seen) out[k++] = name;
+  }
+  out[k] = NULL;
+  return out;
+}
+
+/* The mapping of key k's section under m (m itself for the root or a list item). */
+static int section_of(const struct map *m, const struct case_key *t, int n, const struct case_key *k,
+                      struct map *out) {
+  const char *allowed[MAX_SECTION_KEYS + 1];
+  if (!k->section[0]) return *out = *m, 0;
+  return sub(m, k->section, section_keys(t, n, k->section, allowed), out);
+}
+
+static int read_list(const struct map *root, const struct case_key *k, struct case_def *c);
+
+/* Key k of mapping m into the member of base (the case, or list item i); its default from
+ * the keys read before. */
+static int read_key(const struct map *m, const struct case_key *k, struct case_def *c, void *base, int i) {
+  char *at = (char *)base + k->offset;
+  double def[2] = {k->def[0], k->def[1]}, x;
+  if (k->computed) k->computed(c, base, def);
+  if (k->flags & KEY_REQUIRED) def[0] = REQUIRED;
+  int rc = 0, required = (k->flags & KEY_REQUIRED) != 0;
+  char path[PATH_LEN];
+  switch (k->type) {
+  case KEY_NUMBER: rc = num(m, k->key, k->rule, def[0], (double *)at); break;
+  case KEY_INTEGER:
+    rc = num(m, k->key, k->rule, def[0], &x);
+    if (!rc) *(int *)at = (int)x;
+    break;
+  case KEY_COUNT: rc = lnum(m, k->key, k->rule, def[0], (long *)at); break;
+  case KEY_CHOICE: rc = choice(m, k->key, k->names, (int)def[0], (int *)at); break;
+  case KEY_BOOL: rc = choice(m, k->key, BOOL_NAMES, (int)def[0], (int *)at); break;
+  case KEY_TEXT: rc = text(m, k->key, k->punct, required ? NULL : "", k->size, at); break;
+  case KEY_VECTOR:
+    if (k->flags & KEY_GIVEN) *(int *)((char *)base + k->given) = get(m, k->key, path) != NULL;
+    rc = vec(m, k->key, required, (double *)at);
+    break;
+  case KEY_BAND: rc = band(m, k->key, def, (double *)at); break;
+  case KEY_LIST: rc = read_list(m, k, c); break;
+  }
+  return rc || (k->check && k->check(m, c, i));
+}
+
+/* The keys of table t with (late) or without KEY_LATE from mapping m into base. */
+static int read_keys(const struct map *m, const struct case_key *t, int n, int late, struct case_def *c,
+                     void *base, int i) {
+  struct map s;
+  for (int j = 0; j < n; j++)
+    if (((t[j].flags & KEY_LATE) != 0) == late &&
+        (section_of(m, t, n, &t[j], &s) || read_key(&s, &t[j], c, base, i)))
+      return 1;
+  return 0;
+}
+
+/* The list of key k: each item by the list's key table or by its own reader; the count goes to
+ * the member of k. */
+static int read_list(const struct map *root, const struct case_key *k, struct case_def *c) {
+  const struct list_def *l = k->list;
+  const char *allowed[MAX_SECTION_KEYS + 1];
+  char path[PATH_LEN], ipath[PATH_LEN];
+  const struct ynode *seq;
+  int *n = (int *)((char *)c + k->offset);
+  struct map m;
+  if (list(root, k->key, l->lo, l->hi, l->what, &seq, path)) return 1;
+  *n = seq ? seq->n : 0;
+  for (int i = 0; i < *n; i++) {
+    void *item = (char *)c + l->items + (size_t)i * l->item_size;
+    join_index(ipath, path, i);
+    if (open_map(root->ld, seq->entries[i].value, NULL, ipath,
+                 l->keys ? section_keys(l->keys, l->n_keys, "", allowed) : l->allowed, &m) ||
+        (l->keys ? read_keys(&m, l->keys, l->n_keys, 0, c, item, i) : l->read(&m, c, i)))
+      return 1;
+  }
+  return 0;
+}
+
+static int read_case(const struct ynode *root, struct case_def *c, char *err, size_t err_len) {
+  struct ld ld = {err, err_len, 2};
+  const char *allowed[MAX_SECTION_KEYS + 1];
+  struct map m;
+  return open_map(&ld, root, root, "", section_keys(CASE_KEYS, N_CASE_KEYS, "", allowed), &m) ||
+         read_keys(&m, CASE_KEYS, N_CASE_KEYS, 0, c, c, 0) || read_keys(&m, CASE_KEYS, N_CASE_KEYS, 1, c, c, 0);
+}
+
+/* Rewrite the message in err on one printable line: control characters (a newline inside a
+ * value or key shown in it) become \n, \t or \xNN; the end is cut at err_len. */
+static void one_line(char *err, size_t err_len) {
+  char buf[4096];
+  size_t k = 0;
+  for (const unsigned char *c = (const unsigned char *)err; *c && k + 5 < sizeof buf; c++) {
+    if (*c >= 0x20 && *c != 0x7f)
+      buf[k++] = (char)*c;
+    else
+      k += (size_t)snprintf(buf + k, 5, *c == '\n' ? "\\n" : *c == '\t' ? "\\t" : "\\x%02x", *c);
+  }
+  buf[k] = '\0';
+  snprintf(err, err_len, "%s", buf);
+}
+
+/* Load, override, validate and resolve the case text into c. */
+int case_load_string(const char *text, size_t len, const char *source, int n_sets,
+                     char *const *sets, struct case_def *c, char *err, size_t err_len) {
+  memset(c, 0, sizeof *c);
+  if (strlen(source) >= sizeof c->source_file) {
+    if (err_len) snprintf(err, err_len, "%s: path too long, expected at most %zu characters",
+                          source, sizeof c->source_file - 1);
+    return 1;
+  }
+  snprintf(c->source_file, sizeof c->source_file, "%s", source);
+  struct ynode *root = ytree_parse(text, len, source, 0, err, err_len);
+  int rc = root ? 0 : 1;
+  for (int i = 0; rc == 0 && i < n_sets; i++) rc = ytree_set(root, sets[i], i + 1, err, err_len);
+  if (rc == 0) rc = read_case(root, c, err, err_len);
+  ytree_free(root);
+  if (rc && err_len) one_line(err, err_len);
+  return rc;
+}
+
+/* What a file of mode st_mode is when it is not a regular file ("a directory"), or NULL. */
+static const char *not_regular(mode_t mode) {
+  return S_ISREG(mode) ? NULL : S_ISDIR(mode) ? "a directory" : S_ISFIFO(mode) ? "a FIFO (named pipe)"
+         : S_ISCHR(mode) ? "a character device" : S_ISBLK(mode) ? "a block device"
+         : S_ISSOCK(mode) ? "a socket" : "not a regular file";
+}
+
+const char *case_file_not_regular(const char *path) {
+  struct stat st;
+  return stat(path, &st) == 0 ? not_regular(st.st_mode) : NULL;
+}
+
+/* The regular file at path opened for reading, or NULL with a message. Its type is asked before
+ * it is opened, and again of the open file (which may have been replaced in between): opening a
+ * FIFO would wait for a writer, reading a device might never end. */
+static FILE *open_regular(const char *path, char *err, size_t err_len) {
+  struct stat st;
+  const char *kind = NULL;
+  int fd = -1;
+  if (stat(path, &st) == 0 && !(kind = not_regular(st.st_mode)) &&
+      (fd = open(path, O_RDONLY | O_NONBLOCK | O_CLOEXEC)) >= 0 && fstat(fd, &st) == 0)
+    kind = not_regular(st.st_mode);
+  FILE *f = fd >= 0 && !kind ? fdopen(fd, "rb") : NULL;
+  if (f) return f;
+  if (kind) snprintf(err, err_len, "%s: cannot read the file: it is %s, expected a regular file", path, kind);
+  else snprintf(err, err_len, "%s: cannot open the file: %s", path, strerror(errno));
+  if (fd >= 0) close(fd);
+  return NULL;
+}
+
+/* The whole file at path (at most CASE_MAX_FILE_BYTES) in a new buffer, its size in *len; NULL
+ * with a message on failure. */
+static char *read_file(const char *path, size_t *len, char *err, size_t err_len) {
+  FILE *f = open_regular(path, err, err_len);
+  if (!f) return NULL;
+  char *text = mem_alloc(CASE_MAX_FILE_BYTES + 1, "the case file's text");
+  *len = fread(text, 1, CASE_MAX_FILE_BYTES + 1, f);
+  if (ferror(f))
+    snprintf(err, err_len, "%s: cannot read the file: %s", path, strerror(errno));
+  else if (*len > CASE_MAX_FILE_BYTES)
+    snprintf(err, err_len, "%s: larger than %d bytes, expected a case file of at most that size",
+             path, CASE_MAX_FILE_BYTES);
+  int ok = !ferror(f) && *len <= CASE_MAX_FILE_BYTES;
+  fclose(f);
+  if (ok) return text;
+  free(text);
+  return NULL;
+}
+
+/* Load, override, validate and resolve a case file into c. */
+int case_load(const char *path, int n_sets, char *const *sets, struct case_def *c, char *err,
+              size_t err_len) {
+  size_t len = 0;
+  char *text = read_file(path, &len, err, err_len);
+  memset(c, 0, sizeof *c);
+  if (!text && err_len) one_line(err, err_len);
+  if (!text) return 1;
+  int rc = case_load_string(text, len, path, n_sets, sets, c, err, err_len);
+  free(text);
+  return rc;
+}
+
+/* Column suffixes of an integral probe. */
+static const char *const INTEGRAL_COLUMNS[] = {"volume", "kinetic", "potential", "com_x", "com_y", "com_z"};
+
+int case_probe_column(const struct case_def *c, int k, int col, char *buf, size_t len) {
+  const struct probe *p = &c->probes[k];
+  int n = p->kind == PROBE_INTEGRAL ? 3 + c->dimension : 1;
+  if (buf && p->kind == PROBE_INTEGRAL) snprintf(buf, len, "%s_%s", p->name, INTEGRAL_COLUMNS[col]);
+  else if (buf) snprintf(buf, len, "%s", p->name);
+  return n;
+}
+
+
+/* ---- writing by the tables ---- */
+
+/* Key k of base (the case, or a list item) at indent, when it is written. */
+static void put_key(FILE *f, const char *indent, const struct case_key *k, const struct case_def *c,
+                    const void *base) {
+  const char *at = (const char *)base + k->offset;
+  if (k->written && !k->written(c)) return;
+  switch (k->type) {
+  case KEY_NUMBER: put_num(f, indent, k->key, *(const double *)at); break;
+  case KEY_INTEGER: put_long(f, indent, k->key, *(const int *)at); break;
+  case KEY_COUNT: put_long(f, indent, k->key, *(const long *)at); break;
+  case KEY_CHOICE: put_word(f, indent, k->key, k->names[*(const int *)at]); break;
+  case KEY_BOOL: put_word(f, indent, k->key, BOOL_NAMES[*(const int *)at != 0]); break;
+  case KEY_TEXT: put_str(f, indent, k->key, at); break;
+  case KEY_VECTOR:
+    if (!(k->flags & KEY_GIVEN) || *(const int *)((const char *)base + k->given))
+      put_vec(f, indent, k->key, (const double *)at, c->dimension);
+    break;
+  case KEY_BAND: put_vec(f, indent, k->key, (const double *)at, 2); break;
+  case KEY_LIST: {
+    const struct list_def *l = k->list;
+    int n = *(const int *)at;
+    put_list_key(f, k->key, n);
+    for (int i = 0; i < n; i++) {
+      const char *item = (const char *)c + l->items + (size_t)i * l->item_size;
+      for (int j = 0; l->keys && j < l->n_keys; j++) put_key(f, j ? "    " : "  - ", &l->keys[j], c, item);
+      if (!l->keys) l->put(f, c, i);
+    }
+    break;
+  }
+  }
 }
 
 /* The resolved case as YAML text, every key written; NULL if out of memory. Caller frees. */
@@ -1292,9 +1514,75 @@ char *case_to_yaml(const struct case_def *c) {
   size_t size = 0;
   FILE *f = open_memstream(&buf, &size);
   if (!f) return NULL;
-  put_head(f, c);
-  put_bodies(f, c);
-  put_tail(f, c);
+  for (int i = 0; i < N_CASE_KEYS; i++) {
+    const char *section = CASE_KEYS[i].section;
+    if (section[0] && (i == 0 || strcmp(section, CASE_KEYS[i - 1].section) != 0)) fprintf(f, "%s:\n", section);
+    put_key(f, section[0] ? "  " : "", &CASE_KEYS[i], c, c);
+  }
   fclose(f);
   return buf;
+}
+
+/* ---- the key reference ---- */
+
+static const char *const TYPE_NAMES[] = {"number", "integer", "integer", "word", "boolean", "name",
+                                         "vector", "[min, max]", "list"};
+
+/* The default of key k as the reference shows it. */
+static const char *shown_default(const struct case_key *k, char *buf, size_t len) {
+  char num_buf[32];
+  if (k->flags & KEY_REQUIRED) return "required";
+  if (k->def_doc) return k->def_doc;
+  switch (k->type) {
+  case KEY_NUMBER: snprintf(buf, len, "`%s`", fmt_num(num_buf, sizeof num_buf, k->def[0])); break;
+  case KEY_INTEGER: case KEY_COUNT: snprintf(buf, len, "`%ld`", (long)k->def[0]); break;
+  case KEY_CHOICE: snprintf(buf, len, "`%s`", k->names[(int)k->def[0]]); break;
+  case KEY_BOOL: snprintf(buf, len, "`%s`", BOOL_NAMES[(int)k->def[0]]); break;
+  case KEY_TEXT: snprintf(buf, len, "`\"\"`"); break;
+  case KEY_VECTOR: snprintf(buf, len, "zeros"); break;
+  default: snprintf(buf, len, "empty"); break;
+  }
+  return buf;
+}
+
+/* The values key k allows, as the reference shows them (the words of the error messages). */
+static const char *shown_allowed(const struct case_key *k, char *buf, size_t len) {
+  switch (k->type) {
+  case KEY_NUMBER: case KEY_INTEGER: case KEY_COUNT: return k->rule->expected;
+  case KEY_CHOICE: case KEY_BOOL: {
+    const char *const *names = k->type == KEY_BOOL ? BOOL_NAMES : k->names;
+    buf[0] = '\0';
+    for (int i = 0; names[i]; i++) {
+      size_t n = strlen(buf);
+      snprintf(buf + n, len - n, "%s`%s`", i ? ", " : "", names[i]);
+    }
+    return buf;
+  }
+  case KEY_TEXT: return text_expected(buf, len, k->punct, k->size);
+  case KEY_VECTOR: return "a list of one number per dimension";
+  case KEY_BAND: return BAND_EXPECTED;
+  default: return list_expected(buf, len, k->list->lo, k->list->hi, k->list->what);
+  }
+}
+
+/* One row of the reference: key k at path prefix (its section, or the list's "name.N."). */
+static void key_row(FILE *f, const char *prefix, const struct case_key *k) {
+  char def[LIST_LEN], allowed[LIST_LEN];
+  const char *type = k->type == KEY_TEXT && !k->punct ? "string" : TYPE_NAMES[k->type];
+  fprintf(f, "| `%s%s%s%s` | %s | %s | %s | %s |\n", prefix, k->section, k->section[0] ? "." : "", k->key,
+          type, shown_default(k, def, sizeof def), shown_allowed(k, allowed, sizeof allowed), k->doc);
+}
+
+/* Print the case key reference (a markdown table of CASE_KEYS, the list items' keys after
+ * their list) to f. */
+void case_keys_markdown(FILE *f) {
+  char prefix[PATH_LEN];
+  fputs("| key path | type | default | allowed | meaning |\n|---|---|---|---|---|\n", f);
+  for (int i = 0; i < N_CASE_KEYS; i++) {
+    const struct case_key *k = &CASE_KEYS[i];
+    key_row(f, "", k);
+    snprintf(prefix, sizeof prefix, "%s.N.", k->key);
+    for (int j = 0; k->type == KEY_LIST && k->list->keys && j < k->list->n_keys; j++)
+      key_row(f, prefix, &k->list->keys[j]);
+  }
 }
