@@ -22,12 +22,17 @@ for run in np2 np3 np2r np3r; do
   "$PYTHON" tests/compare_snapshots.py "$out/np1" "$out/$run"
 done
 "$PYTHON" tests/check_mass.py "$out/np3r"
-# 3D: a coarse hydrostatic box, 40 steps, 1 and 3 ranks with a forced re-partition.
+# 3D: a coarse hydrostatic box, 40 steps, 1 and 3 ranks with a forced re-partition, and 3 ranks
+# with top cells of 2^3 cells.
 three=(tests/cases/hydrostatic-3d.yaml --set time.max_steps=40 --set output.interval=0.02
        --set output.progress_interval=1000)
 scripts/mpirun -n 1 build/mpsph run "${three[@]}" -o "$out/3d1"
 scripts/mpirun -n 3 build/mpsph run "${three[@]}" -o "$out/3d3" --set parallel.repartition_every=15
+scripts/mpirun -n 3 build/mpsph run "${three[@]}" -o "$out/3d3b" --set parallel.repartition_every=15 \
+  --set parallel.top_cells_per_rank=4 > "$out/3d3b.log"
+grep -q "top cells of 2^3" "$out/3d3b.log"
 "$PYTHON" tests/compare_snapshots.py "$out/3d1" "$out/3d3"
+"$PYTHON" tests/compare_snapshots.py "$out/3d1" "$out/3d3b"
 # The two-phase dam break with every delta-plus pass forced on (shifting with the delta-u terms,
 # acoustic damper, tensile control, free-surface detection and band), 100 steps, 1, 2 and 3 ranks.
 two=(cases/dambreak-2phase/case.yaml --set resolution.dx=0.04 --set time.max_steps=100
@@ -36,8 +41,14 @@ two=(cases/dambreak-2phase/case.yaml --set resolution.dx=0.04 --set time.max_ste
 scripts/mpirun -n 1 build/mpsph run "${two[@]}" -o "$out/2p1"
 scripts/mpirun -n 2 build/mpsph run "${two[@]}" -o "$out/2p2"
 scripts/mpirun -n 3 build/mpsph run "${two[@]}" -o "$out/2p3" --set parallel.repartition_every=40
+# Top cells of several cells (issue 22): 16 per rank give blocks of 2^2 cells (partial blocks at the
+# domain's edges), with re-partitions.
+scripts/mpirun -n 3 build/mpsph run "${two[@]}" -o "$out/2p3b" --set parallel.repartition_every=40 \
+  --set parallel.top_cells_per_rank=16 > "$out/2p3b.log"
+grep -q "top cells of 2^2" "$out/2p3b.log"
 "$PYTHON" tests/compare_snapshots.py "$out/2p1" "$out/2p2"
 "$PYTHON" tests/compare_snapshots.py "$out/2p1" "$out/2p3"
+"$PYTHON" tests/compare_snapshots.py "$out/2p1" "$out/2p3b"
 "$PYTHON" tests/check_mass.py "$out/2p3"
 
 # Scheme generalized-dissipation (its own passes and the Gamma/<grad p> halo field) on the same

@@ -108,7 +108,7 @@ static void check_dim(int dim, long n, double support, long top_per_rank) {
 }
 
 int main(void) {
-  for (long top_per_rank = 1; top_per_rank <= SPACE_TOP_CELLS_PER_RANK; top_per_rank *= 16) {
+  for (long top_per_rank = 1; top_per_rank <= 256; top_per_rank *= 16) {
     check_dim(2, 3000, 0.07, top_per_rank);
     check_dim(3, 3000, 0.15, top_per_rank);
   }

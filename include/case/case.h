@@ -152,6 +152,7 @@ struct case_def {
   /* parallel */
   double repartition_threshold;  /* re-partition when (max-min)/mean load exceeds this */
   long repartition_every;        /* force a re-partition every N steps (0 = only on imbalance) */
+  long top_cells_per_rank;       /* the top cells' size: the largest blocks leaving this many per rank */
   long max_steps;                /* stop after this many steps (0 = no limit) */
 };
 

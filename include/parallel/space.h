@@ -10,9 +10,7 @@
 #include "parallel/grid.h"
 #include "base/parts.h"
 
-/* Partition granularity: top cells per rank at least, where the fine grid allows; and the
- * largest top grid (METIS runs on it on one rank). */
-#define SPACE_TOP_CELLS_PER_RANK 256
+/* The largest top grid (METIS runs on it on one rank). */
 #define SPACE_TOP_CELLS_MAX (1L << 20)
 
 struct space {

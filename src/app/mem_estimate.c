@@ -41,7 +41,7 @@ static double halo_particles(const struct case_def *c, double support, double sh
 static double cell_bytes(const struct case_def *c, double support, int n_ranks) {
   struct grid g;
   if (engine_cell_grid(c, support, &g)) return INFINITY;
-  long block = space_top_block(&g, n_ranks, SPACE_TOP_CELLS_PER_RANK);
+  long block = space_top_block(&g, n_ranks, c->top_cells_per_rank);
   struct grid top = space_top_grid(&g, block);
   int dim = c->dimension, links = dim == 2 ? 8 : 26, layers = engine_halo_layers(c, &g, support);
   double reach = (double)block * ceil((double)layers / (double)block);

@@ -77,6 +77,7 @@ static const struct rule R_POSITIVE = {"a number > 0", 0, 1, HUGE_VAL, 0};
 static const struct rule R_NONNEGATIVE = {"a number >= 0", 0, 0, HUGE_VAL, 0};
 static const struct rule R_CFL = {"a number > 0 and <= 2", 0, 1, 2, 0};
 static const struct rule R_COUNT = {"an integer >= 0", 0, 0, 1e18, 1};
+static const struct rule R_TOP_CELLS = {"an integer from 1 to 1048576", 1, 0, 1048576, 1};
 static const struct rule R_DIMENSION = {"2 or 3", 2, 0, 3, 1};
 static const struct rule R_MODE = {"an integer from 1 to 4", 1, 0, 4, 1};
 static const struct rule R_H_OVER_DX = {"a number > 0 and <= 10", 0, 1, 10, 0};
@@ -1264,6 +1265,9 @@ static const struct case_key CASE_KEYS[] = {
              .def = {0.1}, .doc = "re-partition when the compute-time imbalance max/mean − 1 exceeds this (section 6.3) [-]"),
     CASE_KEY("parallel", "repartition_every", KEY_COUNT, repartition_every, .rule = &R_COUNT,
              .doc = "re-partition every N steps; `0`: only on imbalance"),
+    CASE_KEY("parallel", "top_cells_per_rank", KEY_COUNT, top_cells_per_rank, .rule = &R_TOP_CELLS,
+             .def = {256}, .doc = "the top cells METIS partitions are the largest blocks of cells that leave at "
+             "least this many per rank (section 6.1); fewer: larger blocks, a smaller METIS graph, a coarser balance"),
 };
 #define N_CASE_KEYS ((int)(sizeof CASE_KEYS / sizeof CASE_KEYS[0]))
 

@@ -186,7 +186,7 @@ static int setup_space(struct engine *e) {
     return 1;
   }
   int layers = engine_halo_layers(c, &g, e->prm.kern.support);
-  space_init(&e->space, &g, e->rank, e->n_ranks, layers, SPACE_TOP_CELLS_PER_RANK);
+  space_init(&e->space, &g, e->rank, e->n_ranks, layers, c->top_cells_per_rank);
   e->prm.c_max = 0;
   for (int ph = 0; ph < c->n_phases; ph++) e->prm.c_max = fmax(e->prm.c_max, c->phases[ph].c0);
   return 0;
