@@ -180,6 +180,10 @@ int engine_rebuild(struct engine *e);
 /** Re-partition the cells with METIS from the current particle weights and redistribute. */
 int engine_repartition(struct engine *e);
 
+/** Rank 0 prints the start-up line: the global particle counts, the cell grid, the halo depth,
+ *  the ranks and the top cells' block size. */
+void engine_print_layout(const struct engine *e, double n_fluid, double n_wall);
+
 /** The cell grid of case c for a kernel support of `support` m (cell edge at least
  *  ENGINE_CELL_SKIN supports). Returns 0, or 1 when it would have more than 2^31 cells. */
 int engine_cell_grid(const struct case_def *c, double support, struct grid *g);

@@ -162,6 +162,13 @@ static int lock_output(struct engine *e) {
   return status;
 }
 
+void engine_print_layout(const struct engine *e, double n_fluid, double n_wall) {
+  if (e->rank == 0)
+    printf("particles: %.0f fluid, %.0f wall; grid %ld x %ld x %ld cells, halo %d layers, %d ranks; "
+           "top cells of %ld^%d\n", n_fluid, n_wall, e->space.grid.n[0], e->space.grid.n[1],
+           e->space.grid.n[2], e->space.halo_layers, e->n_ranks, e->space.block, e->c->dimension);
+}
+
 int engine_halo_layers(const struct case_def *c, const struct grid *g, double support) {
   double edge = g->edge[0];
   for (int d = 1; d < c->dimension; d++) edge = fmin(edge, g->edge[d]);
@@ -204,10 +211,7 @@ static int distribute_particles(struct engine *e) {
   }
   double n_fluid, n_wall;
   engine_global_counts(e, &n_fluid, &n_wall);
-  if (e->rank == 0)
-    printf("particles: %.0f fluid, %.0f wall; grid %ld x %ld x %ld cells, halo %d layers, %d ranks; "
-           "top cells of %ld^%d\n", n_fluid, n_wall, e->space.grid.n[0], e->space.grid.n[1],
-           e->space.grid.n[2], e->space.halo_layers, e->n_ranks, e->space.block, e->c->dimension);
+  engine_print_layout(e, n_fluid, n_wall);
   return engine_repartition(e);
 }
 

@@ -82,14 +82,6 @@ static int *gather_counts(const struct engine *e, const struct init_rows *rows, 
   return all;
 }
 
-/* Rank 0 prints the global counts line. */
-static void print_counts(const struct engine *e, const struct init_counts *n) {
-  if (e->rank == 0)
-    printf("particles: %ld fluid, %ld wall; grid %ld x %ld x %ld cells, halo %d layers, %d ranks; "
-           "top cells of %ld^%d\n", n->n_fluid, n->n_wall, e->space.grid.n[0], e->space.grid.n[1],
-           e->space.grid.n[2], e->space.halo_layers, e->n_ranks, e->space.block, e->c->dimension);
-}
-
 /* The global counts from every row's count; the first id of each row into first_id. */
 static void number_rows(const struct case_def *c, const struct init_rows *rows, const int *all,
                         int64_t *first_id, struct init_counts *n) {
@@ -230,7 +222,7 @@ static int number_and_generate(struct engine *e, const struct init_rows *rows, c
   number_rows(e->c, rows, all, first_id, &n);
   int status = init_no_fluid(e->c, n.n_fluid, err, sizeof err);
   if (status && e->rank == 0) fprintf(stderr, "mpsph: %s\n", err);
-  if (!status) print_counts(e, &n);
+  if (!status) engine_print_layout(e, (double)n.n_fluid, (double)n.n_wall);
   if (!status) status = engine_adopt_partition(e, weight);
   if (!status) status = generate_own(e, rows, first_id, &n);
   free(first_id);
