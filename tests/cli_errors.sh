@@ -25,7 +25,7 @@ expect 0 "usage" -- build/mpsph --help
 expect 0 "^mpsph " -- build/mpsph --version
 expect 0 "^\| \`physics.delta\` \| number" -- build/mpsph keys
 expect 0 "# particles: 625 fluid" -- build/mpsph check "$case"
-expect 0 "# memory: about [0-9.]+ MB per rank on 1 rank \(1117 particles with the halo at 450 bytes" -- build/mpsph check "$case"
+expect 0 "# memory: about [0-9.]+ MB per rank on 1 rank \(1117 particles with the halo at 440 bytes" -- build/mpsph check "$case"
 # --ranks N: the estimate per rank for N ranks (a share and its halo), check only, N a whole number.
 expect 0 "# memory: about [0-9.]+ MB per rank on 8 ranks \(1117 particles with the halo" -- build/mpsph check "$case" --ranks 8
 expect 0 "# memory: about [0-9.]+ MB per rank on 4 ranks \(16463 particles with the halo" -- \

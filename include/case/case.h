@@ -156,4 +156,11 @@ struct case_def {
   long max_steps;                /* stop after this many steps (0 = no limit) */
 };
 
+/** Whether a wall of c moves. */
+static inline int case_walls_move(const struct case_def *c) {
+  for (int w = 0; w < c->n_walls; w++)
+    if (c->walls[w].moving) return 1;
+  return 0;
+}
+
 #endif

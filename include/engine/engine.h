@@ -188,10 +188,17 @@ void engine_print_layout(const struct engine *e, double n_fluid, double n_wall);
  *  ENGINE_CELL_SKIN supports). Returns 0, or 1 when it would have more than 2^31 cells. */
 int engine_cell_grid(const struct case_def *c, double support, struct grid *g);
 
-/** The halo depth [cells] of case c on cell grid g: 1 without walls; with walls
+/** The halo's reach [cells] of case c on cell grid g: 1 without walls; with walls
  *  1 + ceil(2 wall thickness / smallest cell edge), since a ghost's mirror point lies up to twice
- *  the wall thickness away and its interpolation reaches one support further. */
+ *  the wall thickness away and its interpolation reaches one support further. The halo is this
+ *  deep only around the mirror points' cells (everywhere with a moving wall), 1 elsewhere. */
 int engine_halo_layers(const struct case_def *c, const struct grid *g, double support);
+
+/** The depth [cells] of the halo band around every owned cell, for a halo reach of halo_layers
+ *  (engine_halo_layers): 1, or halo_layers with a moving wall (its ghosts' mirror points move
+ *  between two partitions); beyond the band, with fixed walls, the halo holds only the cells
+ *  around the owned ghosts' mirror points. */
+int engine_halo_band(const struct case_def *c, int halo_layers);
 
 /** Partition the top cells with METIS by `weight` (one per top cell, read on rank 0) and adopt
  *  the result in the space. Returns 0, or 1 with a message on rank 0. Collective. */

@@ -10,7 +10,7 @@
 struct proxy {
   int rank;               /* the neighbouring rank */
   long n_cells_out;
-  long *cells_out;        /* owned cells within halo reach of the neighbour's cells, ascending */
+  long *cells_out;        /* owned cells the neighbour wants in its halo, ascending */
   long n_send, n_recv;    /* particles sent / received in the current halo */
   long *send_index;       /* owned slots sent, in (cell, id) order */
   long send_index_cap;
@@ -32,8 +32,14 @@ struct halo {
 /** Bytes held by the proxies (cell and send lists, message buffers). */
 long halo_bytes(const struct halo *h);
 
-/** Build the proxies from the cell ownership of s (after every partition change). */
-void halo_build(struct halo *h, const struct space *s, MPI_Comm comm);
+/** Build the proxies from the cell ownership of s (after every partition change). This rank's halo
+ *  holds the foreign cells within `layers` (at most s->halo_layers) of its owned cells and within
+ *  one layer of each of the cells reads[0..n_reads) (cells around which its passes read besides
+ *  their own, e.g. its wall ghosts' mirror points, all within s->halo_layers - 1 of an owned cell);
+ *  each rank tells the ranks within s->halo_layers of its cells which of their cells it wants, and
+ *  the proxies are the ranks it sends to or receives from. Collective over the communicator. */
+void halo_build(struct halo *h, const struct space *s, int layers, const long *reads, long n_reads,
+                MPI_Comm comm);
 
 /** Free the proxies. */
 void halo_free(struct halo *h);

@@ -12,6 +12,7 @@
 #include "io/outdir.h"
 #include "parallel/partition.h"
 #include "parallel/redistribute.h"
+#include "physics/passes.h"
 #ifdef __GLIBC__
 #include <malloc.h>
 #endif
@@ -69,6 +70,33 @@ static void resort(struct engine *e) {
   engine_work_reserve(e);
 }
 
+/* The cells of the mirror points of this rank's wall ghosts (the Shepard interpolation of
+ * pass_wall_ghosts reads the cells around them); *n their number. */
+static long *mirror_cells(struct engine *e, long *n) {
+  const struct parts *p = &e->p;
+  struct pass_ctx ctx = engine_pass_ctx(e);
+  long *cells = mem_calloc(p->n_owned + 1, sizeof(long), "mirror point cells");
+  *n = 0;
+  for (long k = 0; k < p->n_owned; k++) {
+    if (p->phase[k] != PHASE_WALL) continue;
+    double xs[3];
+    wall_mirror_point(&ctx, k, xs);
+    cells[(*n)++] = grid_cell_clamped(&e->space.grid, xs);
+  }
+  return cells;
+}
+
+/* The halo of the current partition: one cell layer around the owned cells, and one around the
+ * cell of each owned ghost's mirror point; with a moving wall, whose ghosts move between two
+ * builds, every cell within the space's halo_layers of an owned cell instead. */
+static void build_halo(struct engine *e) {
+  long n = 0, *reads = NULL;
+  int band = engine_halo_band(e->c, e->space.halo_layers);
+  if (band == 1 && e->c->n_walls) reads = mirror_cells(e, &n);
+  halo_build(&e->halo, &e->space, band, reads, n, e->comm);
+  free(reads);
+}
+
 int engine_adopt_partition(struct engine *e, const int64_t *weight) {
   char err[512];
   int *owner = mem_calloc(e->space.top.n_cells, sizeof(int), "top cell owners");
@@ -85,7 +113,7 @@ int engine_repartition(struct engine *e) {
   free(w);
   if (status) return 1;
   redistribute_parts(&e->space, &e->p, e->comm);
-  halo_build(&e->halo, &e->space, e->comm);
+  build_halo(e);
   resort(e);
   e->n_repartitions++;
   e->last_repartition_step = e->step;
@@ -162,11 +190,21 @@ static int lock_output(struct engine *e) {
   return status;
 }
 
+/* The halo depth as the start-up line states it, into buf. */
+static void halo_depth_text(const struct engine *e, char *buf, size_t len) {
+  int layers = e->space.halo_layers;
+  if (engine_halo_band(e->c, layers) == layers)
+    snprintf(buf, len, "halo %d layer%s", layers, layers > 1 ? "s" : "");
+  else snprintf(buf, len, "halo 1 layer, %d toward wall ghosts' mirror points", layers);
+}
+
 void engine_print_layout(const struct engine *e, double n_fluid, double n_wall) {
+  char halo[96];
+  halo_depth_text(e, halo, sizeof halo);
   if (e->rank == 0)
-    printf("particles: %.0f fluid, %.0f wall; grid %ld x %ld x %ld cells, halo %d layers, %d ranks; "
+    printf("particles: %.0f fluid, %.0f wall; grid %ld x %ld x %ld cells, %s, %d ranks; "
            "top cells of %ld^%d\n", n_fluid, n_wall, e->space.grid.n[0], e->space.grid.n[1],
-           e->space.grid.n[2], e->space.halo_layers, e->n_ranks, e->space.block, e->c->dimension);
+           e->space.grid.n[2], halo, e->n_ranks, e->space.block, e->c->dimension);
 }
 
 int engine_halo_layers(const struct case_def *c, const struct grid *g, double support) {
@@ -174,6 +212,10 @@ int engine_halo_layers(const struct case_def *c, const struct grid *g, double su
   for (int d = 1; d < c->dimension; d++) edge = fmin(edge, g->edge[d]);
   double thickness = init_wall_layers(c, support) * c->dx;
   return c->n_walls ? 1 + (int)ceil(2 * thickness / edge) : 1;
+}
+
+int engine_halo_band(const struct case_def *c, int halo_layers) {
+  return case_walls_move(c) ? halo_layers : 1;
 }
 
 int engine_cell_grid(const struct case_def *c, double support, struct grid *g) {
@@ -234,7 +276,7 @@ int engine_init(struct engine *e, const struct case_def *c, const char *outdir,
   engine_assemble(e);
   if (restart && distribute_particles(e)) return 1;
   if (!restart) {
-    halo_build(&e->halo, &e->space, e->comm);
+    build_halo(e);
     resort(e);
   }
   e->n_repartitions = 0;

@@ -191,8 +191,7 @@ void engine_assemble(struct engine *e) {
   memcpy(old, e->ops, sizeof old);
   const struct scheme *s = scheme_of(e->c->scheme);
   e->prm.features = s->terms(e) | s->feature;
-  e->moving_walls = 0;
-  for (int w = 0; w < e->c->n_walls; w++) e->moving_walls |= e->c->walls[w].moving;
+  e->moving_walls = case_walls_move(e->c);
   damper_coefficients(e);
   interface_table(e->c->interface_mode, e->prm.iface);
   e->n_ops = 0;

@@ -6,7 +6,8 @@
 #include "base/mem.h"
 #include "parallel/proxy.h"
 
-enum { TAG_COUNT = 11, TAG_PARTS = 12, TAG_FIELDS = 13, TAG_MIGRATE_COUNT = 14, TAG_MIGRATE = 15 };
+enum { TAG_COUNT = 11, TAG_PARTS = 12, TAG_FIELDS = 13, TAG_MIGRATE_COUNT = 14, TAG_MIGRATE = 15,
+       TAG_WANT_COUNT = 16, TAG_WANT = 17 };
 
 int parts_packed_size(const struct parts *p, unsigned op) {
   int w = 0;
@@ -61,39 +62,161 @@ static void reserve_buf(double **buf, long *cap, long n) {
   *buf = mem_realloc(*buf, mem_bytes(*cap, sizeof(double), "halo buffer"), "halo buffer");
 }
 
-/* Mark, for every rank, the owned cells lying within `layers` of one of its cells. */
-static void mark_cells_out(const struct space *s, char *mark /* n_ranks x n_owned_cells */) {
+/* Set cand[r] for every other rank owning a fine cell within the space's halo reach (halo_layers)
+ * of a cell of this rank: a symmetric relation, the ranks that may exchange halo cells with it. */
+static void mark_candidates(const struct space *s, char *cand) {
   long *nb = mem_calloc(grid_stencil_size(&s->grid, s->halo_layers), sizeof(long), "halo cell stencil");
   for (long k = 0; k < s->n_owned_cells; k++) {
     int n = grid_stencil(&s->grid, s->owned_cells[k], s->halo_layers, nb);
-    for (int j = 0; j < n; j++) {
-      int r = space_cell_owner(s, nb[j]);
-      if (r != s->rank) mark[(long)r * s->n_owned_cells + k] = 1;
-    }
+    for (int j = 0; j < n; j++) cand[space_cell_owner(s, nb[j])] = 1;
   }
+  cand[s->rank] = 0;
   free(nb);
 }
 
-void halo_build(struct halo *h, const struct space *s, MPI_Comm comm) {
+/* A foreign cell this rank wants in its halo, with its owner. */
+struct wanted_cell {
+  int owner;
+  long cell;
+};
+
+/* The foreign cells wanted so far: marked in seen (by local cell) and listed in cells. */
+struct wanted {
+  char *seen;
+  struct wanted_cell *cells;
+  long n, cap;
+  long *nb;   /* stencil scratch */
+};
+
+/* Add the foreign cells within `layers` of cell c to w. Returns 1 when one of them is out of the
+ * halo's reach (not a local cell), else 0. */
+static int want_around(struct wanted *w, const struct space *s, long c, int layers) {
+  int n = grid_stencil(&s->grid, c, layers, w->nb);
+  for (int j = 0; j < n; j++) {
+    long cell = w->nb[j], l = space_local_cell(s, cell);
+    int owner = space_cell_owner(s, cell);
+    if (l < 0) return 1;
+    if (owner == s->rank || w->seen[l]) continue;
+    w->seen[l] = 1;
+    if (w->n == w->cap) {
+      w->cap = 2 * w->cap + 64;
+      w->cells = mem_realloc(w->cells, mem_bytes(w->cap, sizeof(*w->cells), "halo cells wanted"),
+                             "halo cells wanted");
+    }
+    w->cells[w->n++] = (struct wanted_cell){owner, cell};
+  }
+  return 0;
+}
+
+static int by_owner_and_cell(const void *a, const void *b) {
+  const struct wanted_cell *x = a, *y = b;
+  if (x->owner != y->owner) return (x->owner > y->owner) - (x->owner < y->owner);
+  return (x->cell > y->cell) - (x->cell < y->cell);
+}
+
+/* The foreign cells within `layers` of an owned cell or within one layer of a cell of
+ * reads[0..n_reads), sorted by owner and global index; *n their number. Returns NULL (after a
+ * message) when a read cell's neighbours lie beyond the halo's reach. */
+static struct wanted_cell *wanted_cells(const struct space *s, int layers, const long *reads, long n_reads,
+                                        long *n) {
+  struct wanted w = {.seen = mem_calloc(s->n_local_tops * s->cells_per_top + 1, 1, "halo cell marks"),
+                     .nb = mem_calloc(grid_stencil_size(&s->grid, layers), sizeof(long), "halo cell stencil")};
+  int beyond = 0;
+  for (long k = 0; k < s->n_owned_cells; k++) beyond |= want_around(&w, s, s->owned_cells[k], layers);
+  for (long k = 0; k < n_reads && !beyond; k++) beyond |= want_around(&w, s, reads[k], 1);
+  free(w.seen);
+  free(w.nb);
+  if (beyond) {
+    free(w.cells);
+    return NULL;
+  }
+  qsort(w.cells, w.n, sizeof(*w.cells), by_owner_and_cell);
+  *n = w.n;
+  return w.cells;
+}
+
+/* Stop every rank on a halo request beyond the reach halo_layers promises (an internal error: the
+ * engine's halo depth must cover what its passes read). */
+static void beyond_reach(const struct space *s, MPI_Comm comm) {
+  fprintf(stderr, "mpsph: internal error on rank %d: a halo cell the passes read lies beyond the halo "
+          "reach of %d cell layers\n", s->rank, s->halo_layers);
+  MPI_Abort(comm, 70);
+}
+
+/* Exchange the wanted cells with the candidate ranks: tell candidate k (rank ranks[k]) the n_want[k]
+ * cells of want_by[k] and receive the cells it wants from this rank into cells_in[k] (n_in[k]). */
+static void exchange_wanted(MPI_Comm comm, const int *ranks, int n_cand, long *const *want_by,
+                            const long *n_want, long **cells_in, long *n_in) {
+  MPI_Request *req = mem_calloc(2 * n_cand + 1, sizeof(MPI_Request), "halo requests");
+  for (int k = 0; k < n_cand; k++) {
+    MPI_Irecv(&n_in[k], 1, MPI_LONG, ranks[k], TAG_WANT_COUNT, comm, &req[2 * k]);
+    MPI_Isend(&n_want[k], 1, MPI_LONG, ranks[k], TAG_WANT_COUNT, comm, &req[2 * k + 1]);
+  }
+  MPI_Waitall(2 * n_cand, req, MPI_STATUSES_IGNORE);
+  int nreq = 0;
+  for (int k = 0; k < n_cand; k++) {
+    cells_in[k] = mem_calloc(n_in[k] + 1, sizeof(long), "halo cells to send");
+    if (n_in[k]) MPI_Irecv(cells_in[k], (int)n_in[k], MPI_LONG, ranks[k], TAG_WANT, comm, &req[nreq++]);
+    if (n_want[k]) MPI_Isend(want_by[k], (int)n_want[k], MPI_LONG, ranks[k], TAG_WANT, comm, &req[nreq++]);
+  }
+  MPI_Waitall(nreq, req, MPI_STATUSES_IGNORE);
+  free(req);
+}
+
+/* The wanted cells want[0..n) (sorted by owner) as global indices in cells, with the first and the
+ * number of those of each candidate (want_by[k], n_want[k]; candidate_of_rank maps a rank to its
+ * candidate index). Returns 1 when a wanted cell's owner is not a candidate. */
+static int group_wanted(const struct wanted_cell *want, long n, const int *candidate_of_rank, long *cells,
+                        long **want_by, long *n_want) {
+  for (long i = 0; i < n; i++) {
+    int k = candidate_of_rank[want[i].owner];
+    if (k < 0) return 1;
+    if (!n_want[k]) want_by[k] = cells + i;
+    cells[i] = want[i].cell;
+    n_want[k]++;
+  }
+  return 0;
+}
+
+void halo_build(struct halo *h, const struct space *s, int layers, const long *reads, long n_reads,
+                MPI_Comm comm) {
   halo_free(h);
   h->comm = comm;
   h->proxy_of_rank = mem_calloc(s->n_ranks, sizeof(int), "halo proxy table");
-  char *mark = mem_calloc((size_t)s->n_ranks, s->n_owned_cells ? s->n_owned_cells : 1, "halo cell marks");
-  mark_cells_out(s, mark);
-  h->proxies = mem_calloc(s->n_ranks, sizeof(struct proxy), "halo proxies");
+  char *cand = mem_calloc(s->n_ranks, 1, "halo candidate ranks");
+  mark_candidates(s, cand);
+  int n_cand = 0, *ranks = mem_calloc(s->n_ranks, sizeof(int), "halo candidate ranks");
   for (int r = 0; r < s->n_ranks; r++) {
-    const char *row = mark + (long)r * s->n_owned_cells;
-    long n = 0;
-    for (long k = 0; k < s->n_owned_cells; k++) n += row[k];
-    h->proxy_of_rank[r] = n ? h->n_proxies : -1;
-    if (!n) continue;
-    struct proxy *px = &h->proxies[h->n_proxies++];
-    px->rank = r;
-    px->cells_out = mem_calloc(n, sizeof(long), "halo cells to send");
-    for (long k = 0; k < s->n_owned_cells; k++)
-      if (row[k]) px->cells_out[px->n_cells_out++] = s->owned_cells[k];
+    h->proxy_of_rank[r] = cand[r] ? n_cand : -1;
+    if (cand[r]) ranks[n_cand++] = r;
   }
-  free(mark);
+  free(cand);
+  long n = 0, **want_by = mem_calloc(n_cand + 1, sizeof(long *), "halo cells wanted"),
+       **cells_in = mem_calloc(n_cand + 1, sizeof(long *), "halo cells to send"),
+       *n_want = mem_calloc(2 * (n_cand + 1), sizeof(long), "halo cell counts"), *n_in = n_want + n_cand + 1;
+  struct wanted_cell *want = wanted_cells(s, layers, reads, n_reads, &n);
+  long *cells = mem_calloc(n + 1, sizeof(long), "halo cells wanted");
+  if (!want || group_wanted(want, n, h->proxy_of_rank, cells, want_by, n_want)) beyond_reach(s, comm);
+  free(want);
+  exchange_wanted(comm, ranks, n_cand, want_by, n_want, cells_in, n_in);
+  h->proxies = mem_calloc(n_cand + 1, sizeof(struct proxy), "halo proxies");
+  for (int k = 0; k < n_cand; k++) {
+    int used = n_in[k] || n_want[k];
+    h->proxy_of_rank[ranks[k]] = used ? h->n_proxies : -1;
+    if (!used) {
+      free(cells_in[k]);
+      continue;
+    }
+    struct proxy *px = &h->proxies[h->n_proxies++];
+    px->rank = ranks[k];
+    px->cells_out = cells_in[k];
+    px->n_cells_out = n_in[k];
+  }
+  free(ranks);
+  free(want_by);
+  free(cells_in);
+  free(n_want);
+  free(cells);
   h->requests = mem_calloc(2 * (h->n_proxies + 1), sizeof(MPI_Request), "halo requests");
   h->counts = mem_calloc(4 * (h->n_proxies + 1), sizeof(long), "halo counts");
 }
