@@ -44,9 +44,14 @@ static void check_estimate(void) {
   CHECK(one.particles == 1e6, "one rank holds every particle and no halo: %g", one.particles);
   CHECK(one.total == one.process + one.cells + one.startup + 1e6 * one.bytes_per_particle, "total");
   CHECK(one.startup > 0, "the start-up rows are counted: %g", one.startup);
-  CHECK(one.cells > 0 && one.bytes_per_particle == 450, "cells %g", one.cells);
+  CHECK(one.cells > 0 && one.bytes_per_particle == 440, "cells %g", one.cells);
   struct mem_estimate four = mem_estimate_rank(&c, support, 1e6, 4);
   CHECK(four.particles > 2.5e5 && four.particles < 5e5, "a quarter plus a halo: %g", four.particles);
+  struct mem_estimate two = mem_estimate_rank(&c, support, 1e6, 2);
+  CHECK((two.particles - 5e5) / 5e5 < (four.particles - 2.5e5) / 2.5e5,
+        "a half borders one rank, a quarter two: halo fractions %g, %g", two.particles / 5e5 - 1,
+        four.particles / 2.5e5 - 1);
+  CHECK(four.process == one.process + 4e6, "MPI's buffers on several ranks: %g", four.process);
   struct mem_estimate small = mem_estimate_rank(&c, support, 100, 4);
   CHECK(small.particles <= 100, "the halo is at most the other ranks' particles: %g",
         small.particles);

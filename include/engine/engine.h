@@ -35,6 +35,8 @@ struct stage_op {
   pass_fn pass;                     /* NULL for a halo update */
   int halo_fields;                  /* for halo updates: a mask of HF_* fields */
   int once_per_step;                /* run at the first stage only */
+  int cellwise;                     /* a pass over the owned cells (pass_for_each_owned) that honours
+                                       the context's cell list: it may overlap a halo update before it */
   double seconds;                   /* accumulated wall time */
   long pairs;                       /* accumulated neighbour-pair evaluations */
 };
@@ -74,6 +76,7 @@ struct engine {
   long n_repartitions, last_repartition_step;
   double t_compute;                /* this rank's pass time since the last balance check [s] */
   double t_migrate, t_output;      /* accumulated [s] */
+  double t_repartition;            /* in re-partitions after start-up, accumulated [s] */
   double t_dropped_ops;            /* time of operations dropped from the pipeline by a re-assembly [s] */
   double t_steps;                  /* wall time of the step loop without the final output [s] */
   double t_steps_cpu;              /* CPU time of this process in the same loop [s] */

@@ -30,6 +30,11 @@ const struct scheme *scheme_of(enum scheme_kind k);
 /** Append an operation (a pass, or a halo update of the HF_* fields in mask when pass is NULL). */
 void engine_add_op(struct engine *e, const char *name, pass_fn pass, int mask, int once);
 
+/** Append a cell pass: a pass that visits the owned particles through pass_for_each_owned and
+ *  so honours the context's cell list; after a halo update it runs overlapped with it, over the
+ *  interior cells first. */
+void engine_add_cell_pass(struct engine *e, const char *name, pass_fn pass, int once);
+
 /** Append the particle volumes and the neighbour lists (the lists once per step). */
 void engine_add_volumes_and_lists(struct engine *e);
 

@@ -26,6 +26,7 @@ struct halo {
   int *proxy_of_rank;     /* proxy index of each rank, -1 if not a neighbour */
   MPI_Request *requests;  /* scratch: 2 (n_proxies + 1) requests */
   long *counts;           /* scratch: 4 (n_proxies + 1) counts */
+  int n_pending;          /* requests posted and not yet waited for */
   long n_messages, n_bytes;   /* counters since start */
 };
 
@@ -49,8 +50,20 @@ void halo_free(struct halo *h);
 void halo_rebuild(struct halo *h, const struct space *s, struct parts *p);
 
 /** Refresh the listed per-particle arrays (indexed by slot) in the halo slots, with
- *  non-blocking messages to the neighbouring ranks only. */
-void halo_update(struct halo *h, const struct parts *p, double *const *fields, int n_fields);
+ *  non-blocking messages to the neighbouring ranks only: halo_update_begin then halo_update_end. */
+void halo_update(struct halo *h, double *const *fields, int n_fields);
+
+/** Start a halo update: pack the owned values the neighbours need and post the messages. Until
+ *  halo_update_end the halo slots of the fields are not yet valid (the owned slots may be read). */
+void halo_update_begin(struct halo *h, double *const *fields, int n_fields);
+
+/** Let the posted messages of a halo update progress (MPI_Testall), e.g. between cells of the
+ *  work that overlaps it. */
+void halo_update_progress(struct halo *h);
+
+/** Finish a halo update begun with the same fields: wait and copy the received values into the
+ *  halo slots. */
+void halo_update_end(struct halo *h, double *const *fields, int n_fields);
 
 /** Send owned particles whose cell now belongs to another rank to that rank (a neighbour) and
  *  append the particles received. Returns the id of a particle that moved beyond the

@@ -30,6 +30,9 @@ struct space {
   int *local_order;      /* [n_local_cells] their local indices in increasing global index */
   long n_owned_cells;
   int *owned_cells;      /* owned fine cells in increasing global index (they fit an int: grid.h) */
+  int *by_reach;         /* [n_owned_cells] indices into owned_cells: first the n_interior cells whose
+                            neighbours are all owned (their sums read no halo slot), then the others */
+  long n_interior;
   int *order;            /* scratch: permutation for sorting (slots fit an int, as in nlist.h) */
   int *bucket;           /* scratch: counting-sort offsets per local fine cell */
   int *rank_of_local;    /* [n_local_tops * cells_per_top] position of a local fine cell in local_order */

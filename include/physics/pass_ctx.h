@@ -101,6 +101,12 @@ struct pass_ctx {
   struct work *w;
   struct nlist *nl;                /* neighbour lists of the owned fluid (built by pass_neighbour_lists) */
   const struct space *space;       /* cells: the index the lists and visit_near walk */
+  const int *cells;                /* the owned cells pass_for_each_owned visits (indices into
+                                      space->owned_cells); NULL: every owned cell */
+  long n_cells;
+  void (*progress)(void *arg);     /* called between cells by pass_for_each_owned (NULL: none): lets
+                                      the halo messages the pass overlaps progress */
+  void *progress_arg;
   struct pass_out out;
 };
 

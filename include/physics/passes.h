@@ -38,8 +38,10 @@ static inline double phase_viscosity_total(const struct pass_ctx *ctx, int ph) {
 /** Work on owned particle i with its neighbour list (empty for wall ghosts). */
 typedef void (*particle_fn)(struct pass_ctx *ctx, long i, const struct neighbours *nb);
 
-/** Call fluid (or wall, for wall ghosts; either may be NULL) for every owned particle, in slot
- *  order (which is global cell order). */
+/** Call fluid (or wall, for wall ghosts; either may be NULL) for every owned particle of the
+ *  context's cells (ctx->cells, or every owned cell in global cell order), cell by cell in slot
+ *  order; ctx->progress, if set, between cells. Each call may write only particle i's slots, so
+ *  that the order of the cells changes no result. */
 void pass_for_each_owned(struct pass_ctx *ctx, particle_fn fluid, particle_fn wall);
 
 /** Build the neighbour lists of the owned fluid particles within ctx->prm->list_radius (once per

@@ -108,6 +108,7 @@ int engine_adopt_partition(struct engine *e, const int64_t *weight) {
 }
 
 int engine_repartition(struct engine *e) {
+  double t0 = MPI_Wtime();
   int64_t *w = top_cell_weights(e);
   int status = engine_adopt_partition(e, w);
   free(w);
@@ -117,6 +118,7 @@ int engine_repartition(struct engine *e) {
   resort(e);
   e->n_repartitions++;
   e->last_repartition_step = e->step;
+  e->t_repartition += MPI_Wtime() - t0;
 #ifdef __GLIBC__
   malloc_trim(0);   /* hand the redistribution's freed message buffers back to the system */
 #endif
@@ -280,6 +282,7 @@ int engine_init(struct engine *e, const struct case_def *c, const char *outdir,
     resort(e);
   }
   e->n_repartitions = 0;
+  e->t_repartition = 0;
   engine_print_pipeline(e);
   /* not before: bad input found in the set-up creates no folder */
   return lock_output(e) ? 1 : engine_open_output(e);

@@ -121,14 +121,21 @@ static int halo_field_list(struct engine *e, int mask, double **f) {
 
 /* engine_assemble makes at most 17 operations (ENGINE_MAX_OPS, engine.h), whatever the case; one
  * more is a programming error, stopped here before it overflows e->ops. */
-void engine_add_op(struct engine *e, const char *name, pass_fn pass, int mask, int once) {
+static void add_op(struct engine *e, struct stage_op op) {
   if (e->n_ops == ENGINE_MAX_OPS) {
     fprintf(stderr, "mpsph: internal error: the stage pipeline has more than %d operations (adding '%s')\n",
-            ENGINE_MAX_OPS, name);
+            ENGINE_MAX_OPS, op.name);
     exit(3);
   }
-  e->ops[e->n_ops++] = (struct stage_op){.name = name, .pass = pass, .halo_fields = mask,
-                                         .once_per_step = once};
+  e->ops[e->n_ops++] = op;
+}
+
+void engine_add_op(struct engine *e, const char *name, pass_fn pass, int mask, int once) {
+  add_op(e, (struct stage_op){.name = name, .pass = pass, .halo_fields = mask, .once_per_step = once});
+}
+
+void engine_add_cell_pass(struct engine *e, const char *name, pass_fn pass, int once) {
+  add_op(e, (struct stage_op){.name = name, .pass = pass, .once_per_step = once, .cellwise = 1});
 }
 
 void engine_add_volumes_and_lists(struct engine *e) {
@@ -211,15 +218,15 @@ void engine_assemble_stage(struct engine *e) {
   }
   if (!s->pressure) engine_add_volumes_and_lists(e);
   if (f & FEAT_SURFACE) {
-    engine_add_op(e, "free surface: eigenvalue + umbrella detection, normals (once per step)", pass_free_surface, 0, 1);
+    engine_add_cell_pass(e, "free surface: eigenvalue + umbrella detection, normals (once per step)", pass_free_surface, 1);
     engine_add_op(e, "halo: free-surface flags (once per step)", NULL, HF_SURFACE, 1);
-    engine_add_op(e, "free-surface region: band around the detected particles (once per step)", pass_surface_band, 0, 1);
+    engine_add_cell_pass(e, "free-surface region: band around the detected particles (once per step)", pass_surface_band, 1);
   }
   s->rhs(e);
   if (f & FEAT_SURFACE_TENSION) {
-    engine_add_op(e, "surface tension: colour gradient, interface normals", pass_interface_normals, 0, 0);
+    engine_add_cell_pass(e, "surface tension: colour gradient, interface normals", pass_interface_normals, 0);
     engine_add_op(e, "halo: interface normals", NULL, HF_INTERFACE_NORMAL, 0);
-    engine_add_op(e, "surface tension: curvature, CSF force", pass_surface_tension, 0, 0);
+    engine_add_cell_pass(e, "surface tension: curvature, CSF force", pass_surface_tension, 0);
   }
   if ((f & FEAT_WALLS) && e->c->wall_guard > 0)
     engine_add_op(e, "wall guard: no acceleration into a wall within the guard distance", pass_wall_guard, 0, 0);
@@ -243,6 +250,15 @@ void engine_print_pipeline(const struct engine *e) {
   for (int k = 0; k < e->n_ops; k++) printf("  %d. %s\n", k + 1, e->ops[k].name);
 }
 
+/* Account pass operation op, run with ctx for `seconds`: its counts and its time. */
+static void finish_pass(struct engine *e, struct stage_op *op, const struct pass_ctx *ctx, double seconds) {
+  op->pairs += ctx->out.pairs;
+  e->renorm_fallbacks += ctx->out.renorm_fallbacks;
+  e->n_surface += ctx->out.n_surface;
+  op->seconds += seconds;
+  e->t_compute += seconds;
+}
+
 void engine_run_op(struct engine *e, int k) {
   double *fields[32];
   struct stage_op *op = &e->ops[k];
@@ -250,19 +266,53 @@ void engine_run_op(struct engine *e, int k) {
   if (op->pass) {
     struct pass_ctx ctx = engine_pass_ctx(e);
     op->pass(&ctx);
-    op->pairs += ctx.out.pairs;
-    e->renorm_fallbacks += ctx.out.renorm_fallbacks;
-    e->n_surface += ctx.out.n_surface;
+    finish_pass(e, op, &ctx, MPI_Wtime() - t0);
   } else {
-    halo_update(&e->halo, &e->p, fields, halo_field_list(e, op->halo_fields, fields));
+    halo_update(&e->halo, fields, halo_field_list(e, op->halo_fields, fields));
+    op->seconds += MPI_Wtime() - t0;
   }
-  op->seconds += MPI_Wtime() - t0;
-  if (op->pass) e->t_compute += MPI_Wtime() - t0;
 }
 
+static void progress_halo(void *halo) { halo_update_progress(halo); }
+
+/* Run halo operation k overlapped with the cell pass k + 1 that reads it: post the messages, run
+ * the pass over the interior cells (whose sums read no halo slot) while they travel, wait, then
+ * run it over the cells next to other ranks'. Every particle's sums are those of a plain run. */
+static void run_overlapped(struct engine *e, int k) {
+  double *fields[32];
+  struct stage_op *halo = &e->ops[k], *op = &e->ops[k + 1];
+  const struct space *s = &e->space;
+  int n = halo_field_list(e, halo->halo_fields, fields);
+  double t0 = MPI_Wtime();
+  halo_update_begin(&e->halo, fields, n);
+  double t1 = MPI_Wtime();
+  struct pass_ctx ctx = engine_pass_ctx(e);
+  ctx.cells = s->by_reach;
+  ctx.n_cells = s->n_interior;
+  ctx.progress = progress_halo;
+  ctx.progress_arg = &e->halo;
+  op->pass(&ctx);
+  double t2 = MPI_Wtime();
+  halo_update_end(&e->halo, fields, n);
+  double t3 = MPI_Wtime();
+  ctx.cells = s->by_reach + s->n_interior;
+  ctx.n_cells = s->n_owned_cells - s->n_interior;
+  ctx.progress = NULL;
+  op->pass(&ctx);
+  halo->seconds += (t1 - t0) + (t3 - t2);
+  finish_pass(e, op, &ctx, (t2 - t1) + (MPI_Wtime() - t3));
+}
+
+/* Whether operation k runs at the current stage. */
+static int op_runs(const struct engine *e, int k) { return !e->ops[k].once_per_step || e->stage <= 0; }
+
 void engine_evaluate(struct engine *e, int skip_state_halo) {
-  for (int k = skip_state_halo ? 1 : 0; k < e->n_ops; k++)
-    if (!e->ops[k].once_per_step || e->stage <= 0) engine_run_op(e, k);
+  for (int k = skip_state_halo ? 1 : 0; k < e->n_ops; k++) {
+    if (!op_runs(e, k)) continue;
+    int overlap = !e->ops[k].pass && k + 1 < e->n_ops && e->ops[k + 1].cellwise && op_runs(e, k + 1);
+    if (overlap) run_overlapped(e, k++);
+    else engine_run_op(e, k);
+  }
 }
 
 struct pass_ctx engine_pass_ctx(struct engine *e) {
@@ -283,16 +333,16 @@ void engine_ghosts_now(struct engine *e) {
   if (!shepard && !walls) return;
   double *fields[32];
   struct pass_ctx ctx = engine_pass_ctx(e);
-  halo_update(&e->halo, &e->p, fields, halo_field_list(e, HF_POS | HF_VEL | HF_RHO | HF_P, fields));
+  halo_update(&e->halo, fields, halo_field_list(e, HF_POS | HF_VEL | HF_RHO | HF_P, fields));
   if (shepard) {   /* delta-sph: the stage's first operations, which set the pressure */
     pass_volumes(&ctx);
     pass_neighbour_lists(&ctx);
     pass_shepard_density(&ctx);
-    halo_update(&e->halo, &e->p, fields, halo_field_list(e, HF_RHO_SHEPARD | HF_P, fields));
+    halo_update(&e->halo, fields, halo_field_list(e, HF_RHO_SHEPARD | HF_P, fields));
   }
   if (walls) {
     pass_wall_ghosts(&ctx);
-    halo_update(&e->halo, &e->p, fields, halo_field_list(e, HF_VEL | HF_RHO | HF_P | HF_MASS, fields));
+    halo_update(&e->halo, fields, halo_field_list(e, HF_VEL | HF_RHO | HF_P | HF_MASS, fields));
   }
 }
 

@@ -7,7 +7,7 @@
 /* Schemes delta-sph: the Shepard density and pressure first (the wall ghosts interpolate it). */
 static void shepard_pressure_ops(struct engine *e) {
   engine_add_volumes_and_lists(e);
-  engine_add_op(e, "Shepard density and pressure (delta-sph)", pass_shepard_density, 0, 0);
+  engine_add_cell_pass(e, "Shepard density and pressure (delta-sph)", pass_shepard_density, 0);
   engine_add_op(e, "halo: Shepard densities, pressures", NULL, HF_RHO_SHEPARD | HF_P, 0);
 }
 
@@ -17,26 +17,26 @@ static void gradients_and_rhs_ops(struct engine *e) {
                                     {"gradients: renormalised density gradient, div u",
                                      "gradients: renormalised density gradient, div u, shifting velocity"}};
   unsigned f = e->prm.features;
-  engine_add_op(e, names[(f & FEAT_DIFFUSION) != 0][(f & FEAT_SHIFT) != 0], pass_gradients, 0, 0);
+  engine_add_cell_pass(e, names[(f & FEAT_DIFFUSION) != 0][(f & FEAT_SHIFT) != 0], pass_gradients, 0);
   int halo = ((f & FEAT_DIFFUSION) ? HF_GRAD_RHO : 0) | ((f & FEAT_SHIFT) ? HF_SHIFT : 0) | ((f & FEAT_DAMPER) ? HF_DIV : 0);
   if (halo) engine_add_op(e, "halo: gradient-pass results", NULL, halo, 0);
-  engine_add_op(e, "fluid rhs: continuity and momentum", pass_fluid_rhs, 0, 0);
+  engine_add_cell_pass(e, "fluid rhs: continuity and momentum", pass_fluid_rhs, 0);
 }
 
 /* Scheme same-phase-continuity: its own pair passes (its refusals keep the delta-plus terms out). */
 static void same_phase_ops(struct engine *e) {
   if (e->c->spc_model == SPC_PRESENT) {
-    engine_add_op(e, "Shepard pressure over all phases (same-phase-continuity)", pass_shepard_pressure, 0, 0);
+    engine_add_cell_pass(e, "Shepard pressure over all phases (same-phase-continuity)", pass_shepard_pressure, 0);
     engine_add_op(e, "halo: Shepard pressures", NULL, HF_P_SHEPARD, 0);
   }
-  engine_add_op(e, "same-phase continuity and momentum rhs", pass_same_phase_rhs, 0, 0);
+  engine_add_cell_pass(e, "same-phase continuity and momentum rhs", pass_same_phase_rhs, 0);
 }
 
 /* Scheme generalized-dissipation: its gradient pass and right-hand sides. */
 static void gd_ops(struct engine *e) {
-  engine_add_op(e, "gradients: Shepard sum Gamma, renormalised pressure gradient", pass_gd_gradients, 0, 0);
+  engine_add_cell_pass(e, "gradients: Shepard sum Gamma, renormalised pressure gradient", pass_gd_gradients, 0);
   engine_add_op(e, "halo: Gamma, pressure gradients", NULL, HF_GD, 0);
-  engine_add_op(e, "fluid rhs: continuity with generalized dissipation, momentum", pass_gd_rhs, 0, 0);
+  engine_add_cell_pass(e, "fluid rhs: continuity with generalized dissipation, momentum", pass_gd_rhs, 0);
 }
 
 /* Scheme riemann: the walls, the potential, (with a light phase) the transport velocity and the

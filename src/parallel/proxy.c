@@ -281,9 +281,9 @@ static void exchange_counts(struct halo *h, const long *send, long *recv, int ta
   MPI_Waitall(2 * h->n_proxies, req, MPI_STATUSES_IGNORE);
 }
 
-/* Post the exchange of send_buf (n_send_vals) / recv_buf (n_recv_vals) with every proxy and wait. */
-static void exchange_buffers(struct halo *h, const long *n_send_vals, const long *n_recv_vals,
-                             int tag) {
+/* Post the exchange of send_buf (n_send_vals) / recv_buf (n_recv_vals) with every proxy; the
+ * requests are h->requests[0..h->n_pending). */
+static void post_buffers(struct halo *h, const long *n_send_vals, const long *n_recv_vals, int tag) {
   MPI_Request *req = h->requests;
   int nreq = 0;
   for (int k = 0; k < h->n_proxies; k++) {
@@ -296,7 +296,19 @@ static void exchange_buffers(struct halo *h, const long *n_send_vals, const long
       h->n_bytes += n_send_vals[k] * (long)sizeof(double);
     }
   }
-  MPI_Waitall(nreq, req, MPI_STATUSES_IGNORE);
+  h->n_pending = nreq;
+}
+
+/* Wait for the posted exchange. */
+static void wait_buffers(struct halo *h) {
+  MPI_Waitall(h->n_pending, h->requests, MPI_STATUSES_IGNORE);
+  h->n_pending = 0;
+}
+
+/* Exchange send_buf (n_send_vals) / recv_buf (n_recv_vals) with every proxy and wait. */
+static void exchange_buffers(struct halo *h, const long *n_send_vals, const long *n_recv_vals, int tag) {
+  post_buffers(h, n_send_vals, n_recv_vals, tag);
+  wait_buffers(h);
 }
 
 void halo_rebuild(struct halo *h, const struct space *s, struct parts *p) {
@@ -330,8 +342,7 @@ void halo_rebuild(struct halo *h, const struct space *s, struct parts *p) {
   p->n_halo = total;
 }
 
-void halo_update(struct halo *h, const struct parts *p, double *const *fields, int n_fields) {
-  (void)p;
+void halo_update_begin(struct halo *h, double *const *fields, int n_fields) {
   int np = h->n_proxies;
   long *vals = zeroed_counts(h);
   for (int k = 0; k < np; k++) {
@@ -345,8 +356,17 @@ void halo_update(struct halo *h, const struct parts *p, double *const *fields, i
       for (long i = 0; i < px->n_send; i++) dst[i] = fields[f][px->send_index[i]];
     }
   }
-  exchange_buffers(h, vals, vals + np + 1, TAG_FIELDS);
-  for (int k = 0; k < np; k++) {
+  post_buffers(h, vals, vals + np + 1, TAG_FIELDS);
+}
+
+void halo_update_progress(struct halo *h) {
+  int done;
+  if (h->n_pending) MPI_Testall(h->n_pending, h->requests, &done, MPI_STATUSES_IGNORE);
+}
+
+void halo_update_end(struct halo *h, double *const *fields, int n_fields) {
+  wait_buffers(h);
+  for (int k = 0; k < h->n_proxies; k++) {
     struct proxy *px = &h->proxies[k];
     for (int f = 0; f < n_fields; f++) {
       const double *src = px->recv_buf + f * px->n_recv;
@@ -354,6 +374,11 @@ void halo_update(struct halo *h, const struct parts *p, double *const *fields, i
       memcpy(dst, src, px->n_recv * sizeof(double));
     }
   }
+}
+
+void halo_update(struct halo *h, double *const *fields, int n_fields) {
+  halo_update_begin(h, fields, n_fields);
+  halo_update_end(h, fields, n_fields);
 }
 
 /* The id of an owned particle whose new owner is neither this rank nor a neighbour, or -1. */

@@ -58,9 +58,10 @@ static void free_fine(struct space *s) {
   free(s->local_order);
   free(s->rank_of_local);
   free(s->owned_cells);
+  free(s->by_reach);
   free(s->bucket);
   s->cell_start = NULL;
-  s->cell_count = s->local_order = s->rank_of_local = s->owned_cells = s->bucket = NULL;
+  s->cell_count = s->local_order = s->rank_of_local = s->owned_cells = s->by_reach = s->bucket = NULL;
 }
 
 void space_free(struct space *s) {
@@ -76,7 +77,7 @@ long space_bytes(const struct space *s) {
   long slots = s->n_local_tops * s->cells_per_top;
   long per_slot = (long)sizeof(long) + 3 * (long)sizeof(int);   /* start; count, rank, bucket */
   return s->top.n_cells * 2 * (long)sizeof(int) + slots * per_slot +
-         (s->n_local_cells + s->n_owned_cells) * (long)sizeof(int) +
+         (s->n_local_cells + 2 * s->n_owned_cells) * (long)sizeof(int) +
          s->scratch_capacity * (long)(sizeof(int) + sizeof(double));
 }
 
@@ -147,11 +148,34 @@ static void build_fine(struct space *s) {
   free(cells);
 }
 
+/* Whether every cell around owned cell c (its 3^dim stencil inside the domain) is owned. */
+static int is_interior(const struct space *s, long c) {
+  long nb[27];
+  int n = grid_stencil(&s->grid, c, 1, nb);
+  for (int j = 0; j < n; j++)
+    if (space_cell_owner(s, nb[j]) != s->rank) return 0;
+  return 1;
+}
+
+/* Order the owned cells into by_reach: the interior ones, then those next to another rank's. */
+static void order_by_reach(struct space *s) {
+  s->by_reach = xcalloc(s->n_owned_cells + 1, sizeof(int));
+  char *interior = xcalloc(s->n_owned_cells + 1, 1);
+  s->n_interior = 0;
+  for (long k = 0; k < s->n_owned_cells; k++)
+    if ((interior[k] = (char)is_interior(s, s->owned_cells[k]))) s->by_reach[s->n_interior++] = (int)k;
+  long next = s->n_interior;
+  for (long k = 0; k < s->n_owned_cells; k++)
+    if (!interior[k]) s->by_reach[next++] = (int)k;
+  free(interior);
+}
+
 void space_set_owner(struct space *s, const int *top_owner) {
   memcpy(s->top_owner, top_owner, s->top.n_cells * sizeof(int));
   free_fine(s);
   mark_local_tops(s);
   build_fine(s);
+  order_by_reach(s);
 }
 
 long space_assign_cells(const struct space *s, struct parts *p, long first, long n) {

@@ -1,10 +1,15 @@
 /* pass_neighbours.c — the loop over owned particles with their neighbour lists. */
 #include "physics/passes.h"
 
+#define PROGRESS_EVERY_CELLS 64   /* cells between two calls of ctx->progress */
+
 void pass_for_each_owned(struct pass_ctx *ctx, particle_fn fluid, particle_fn wall) {
   const struct space *s = ctx->space;
   const struct parts *p = ctx->p;
-  for (long k = 0; k < s->n_owned_cells; k++) {
+  long n = ctx->cells ? ctx->n_cells : s->n_owned_cells;
+  for (long q = 0; q < n; q++) {
+    if (ctx->progress && q % PROGRESS_EVERY_CELLS == 0) ctx->progress(ctx->progress_arg);
+    long k = ctx->cells ? ctx->cells[q] : q;
     long c = s->owned_cells[k], count = space_cell_size(s, c);
     if (!count) continue;
     long first = space_cell_first(s, c);
