@@ -2,7 +2,9 @@
 """bench.py - the benchmark suite of issue 6 (`make bench`).
 
 Runs the single- and two-phase dam breaks at three sizes on 1 and 2 ranks (repeated), weak
-scaling 1 -> 2 -> 4 ranks, the scene with each optional term switched off, the single-phase scene
+scaling 1 -> 2 -> 4 ranks, weak scaling of a 3D dam break to 64 ranks (oversubscribed: counts,
+memory, and the memory estimate of `check --ranks`), the scene with each optional term switched
+off, the single-phase scene
 through the multiphase and the SINGLE_PHASE=1 builds, one core's multiply-add peak and the HDF5
 snapshot bandwidth against a raw write; then writes doc/performance.md and doc/performance.csv
 from the measured numbers only (nothing in the report is typed in by hand).
@@ -23,7 +25,8 @@ import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 MPIRUN = os.path.join(ROOT, "scripts", "mpirun")
-CASES = {"1phase": "cases/dambreak-1phase/case.yaml", "2phase": "cases/dambreak-2phase/case.yaml"}
+CASES = {"1phase": "cases/dambreak-1phase/case.yaml", "2phase": "cases/dambreak-2phase/case.yaml",
+         "3d": "scripts/bench/dambreak-3d.yaml"}
 
 # Floating-point operations per neighbour pair of the main pass (pass_fluid_rhs.c, fluid_sums),
 # counted by hand from the source for a same-phase fluid pair in 2D (the most frequent kind):
@@ -44,7 +47,8 @@ FULL = {"dx": {"1phase": [0.0085, 0.00424, 0.00212], "2phase": [0.024, 0.012, 0.
 QUICK = {"dx": {"1phase": [0.02, 0.0142, 0.01], "2phase": [0.024, 0.017, 0.012]},
          "steps": [10, 8, 6], "weak_dx": [0.024, 0.017, 0.012], "weak_steps": 6,
          "term_dx": 0.04, "term_steps": 6, "sp_dx": 0.01, "sp_steps": 10,
-         "hdf5_particles": [100000], "repeats": 2, "peak_seconds": 0.3}
+         "hdf5_particles": [100000], "repeats": 2, "peak_seconds": 0.3,
+         "cluster_ranks": [1, 2, 4, 8], "cluster_per_rank": 10000, "cluster_dx": 0.04, "cluster_steps": 2}
 
 # The two-phase scene with every optional term on, and each term switched off in turn.
 TERMS_ON = ["physics.acoustic_damper=10", "physics.free_surface=on", "physics.tensile_control=true",
@@ -91,6 +95,36 @@ def run_case(exe, case, dx, steps, ranks, work, sets=()):
     return derive(read_timings(os.path.join(out, "timings.csv")), case)
 
 
+def memory_estimate(case, ranks, sets):
+    """The bytes per rank `mpsph check --ranks` estimates for the run (its '# memory' line)."""
+    cmd = ["build/mpsph", "check", CASES[case], "--ranks", str(ranks)]
+    for x in sets:
+        cmd += ["--set", x]
+    for line in sh(cmd).splitlines():
+        if line.startswith("# memory: about "):
+            value, unit = line.split()[3:5]
+            return float(value) * {"MB": 1e6, "GB": 1e9}[unit]
+    raise RuntimeError("no memory line from " + " ".join(cmd))
+
+
+def tank_sets(width):
+    """The 3D scene extruded to `width` m across (z): tank, column and domain."""
+    return ["fluids.0.box.max=[1.228,0.55,%g]" % width, "walls.0.box.max=[3.22,1.0,%g]" % width,
+            "domain.max=[3.52,1.3,%g]" % (width + 0.3)]
+
+
+def particles_of(case, dx, sets):
+    """Fluid plus wall particles of a case (mpsph check)."""
+    cmd = ["build/mpsph", "check", CASES[case], "--set", "resolution.dx=%g" % dx]
+    for x in sets:
+        cmd += ["--set", x]
+    for line in sh(cmd).splitlines():
+        if line.startswith("# particles: "):
+            w = line.split()
+            return int(w[2]) + int(w[w.index("wall") - 1])
+    raise RuntimeError("no particle line from " + " ".join(cmd))
+
+
 def derive(rows, case):
     """Per-run figures from the timings rows: rates per core, shares of the loop, memory."""
     by = {r["name"]: r for r in rows}
@@ -109,7 +143,7 @@ def derive(rows, case):
             pairs = num(r["pairs"])
             if pairs:
                 d["pairs/s/core " + short] = pairs / (num(r["seconds_mean"]) * ranks)
-                if short.startswith(MAIN_PASS):
+                if short.startswith(MAIN_PASS) and case in FLOPS_PER_PAIR:
                     d["main_flops_core"] = pairs * FLOPS_PER_PAIR[case] / (num(r["seconds_mean"]) * ranks)
                     d["pairs_per_particle_step"] = pairs / (fluid * steps * 4)
         elif r["kind"] == "halo":
@@ -137,6 +171,13 @@ def derive(rows, case):
     d["project_by_owner"] = {r["name"][len("bytes_"):]: num(r["value"]) / (fluid + wall)
                              for r in rows if r["name"].startswith("bytes_")}
     d["halo_particles"] = num(by["halo_particles"]["value"])
+    for key in ("halo_particles_max", "halo_neighbours_max", "halo_messages", "halo_bytes"):
+        d[key] = num(by[key]["value"]) if key in by else 0.0
+    if "repartition" in by:
+        d["repartitions"] = num(by["repartition"]["value"])
+        d["repartition_s"] = num(by["repartition"]["seconds_max"])
+    d["project_max_rank"] = max(own)
+    d["pass_s"] = {r["name"]: num(r["seconds_mean"]) for r in rows if r["kind"] == "pass"}
     return d
 
 
@@ -196,6 +237,22 @@ class Bench:
             self.res[("weak", ranks)] = repeat(self.repeats, lambda: run_case(
                 "build/mpsph", "2phase", dx, self.cfg["weak_steps"], ranks, self.work))
 
+    def cluster(self):
+        """Weak scaling to 64 ranks (oversubscribed): the 3D dam break extruded across (z) so that
+        every rank holds about cluster_per_rank particles at a fixed dx (at least 0.25 m across),
+        with a re-partition every 2 steps; once each (its counts do not depend on the load), with
+        the memory `check --ranks` estimates."""
+        cfg, dx = self.cfg, self.cfg["cluster_dx"]
+        n1, n2 = particles_of("3d", dx, tank_sets(1.0)), particles_of("3d", dx, tank_sets(2.0))
+        for ranks in cfg["cluster_ranks"]:
+            width = max(0.25, round(1.0 + (ranks * cfg["cluster_per_rank"] - n1) / (n2 - n1), 3))
+            sets = tank_sets(width) + ["parallel.repartition_every=2"]
+            self.say("cluster: ranks=%d width=%g m" % (ranks, width))
+            run = run_case("build/mpsph", "3d", dx, cfg["cluster_steps"], ranks, self.work, sets)
+            run["width"] = width
+            run["estimate"] = memory_estimate("3d", ranks, sets + ["resolution.dx=%g" % dx])
+            self.res[("cluster", ranks)] = run
+
     def terms(self):
         """The two-phase scene with every term on, then each switched off (1 rank); the variants
         in turn within each repeat, so that a change of the machine's load hits all alike."""
@@ -242,7 +299,7 @@ def main():
     ap.add_argument("--repeats", type=int)
     ap.add_argument("--sizes", type=int, default=3)
     ap.add_argument("--out")
-    ap.add_argument("--only", help="comma-separated groups (sizes,weak,terms,single_phase,hdf5) to run "
+    ap.add_argument("--only", help="comma-separated groups (sizes,weak,terms,single_phase,hdf5,cluster) to run "
                     "again into the results saved by the last run; the report names them")
     ap.add_argument("--report-only", action="store_true",
                     help="rewrite the report from the results saved by the last run into the same --out "
@@ -273,6 +330,7 @@ def main():
     b.terms()
     b.single_phase()
     b.hdf5()
+    b.cluster()
     peaks.append(b.peak())
     m["load_end"] = os.getloadavg()
     m["seconds"] = time.time() - t0

@@ -85,6 +85,7 @@ struct run_summary {
   double mem_sum[N_MEM];           /* the project's arrays by owner, summed over the ranks [bytes] */
   double halo_particles;           /* halo copies summed over the ranks */
   double halo_particles_max;       /* on the rank with the most */
+  double halo_neighbours_max;      /* neighbouring ranks (proxies) of the rank with the most */
   double halo_messages, halo_bytes;   /* sent since start, summed over the ranks */
   double repartition_max, repartition_mean;   /* re-partition time after start-up [s] */
 };
@@ -104,6 +105,7 @@ static void summarise(struct engine *e, long steps, double loop_seconds, struct 
   double halo = (double)e->p.n_halo;
   MPI_Reduce(&halo, &s->halo_particles, 1, MPI_DOUBLE, MPI_SUM, 0, e->comm);
   s->halo_particles_max = max_over_ranks(e, halo);
+  s->halo_neighbours_max = max_over_ranks(e, (double)e->halo.n_proxies);
   double sent[2] = {(double)e->halo.n_messages, (double)e->halo.n_bytes}, sent_sum[2] = {0, 0};
   MPI_Reduce(sent, sent_sum, 2, MPI_DOUBLE, MPI_SUM, 0, e->comm);
   s->halo_messages = sent_sum[0];
@@ -147,6 +149,7 @@ static void write_rows(FILE *f, const void *ctx) {
   fprintf(f, "dropped_operations,time,,%.6f,%.6f,\n", s->dropped_max, s->dropped_mean);
   fprintf(f, "halo_particles,run,%.0f,,,\n", s->halo_particles);
   fprintf(f, "halo_particles_max,run,%.0f,,,\n", s->halo_particles_max);
+  fprintf(f, "halo_neighbours_max,run,%.0f,,,\n", s->halo_neighbours_max);
   fprintf(f, "halo_messages,run,%.0f,,,\nhalo_bytes,run,%.0f,,,\n", s->halo_messages, s->halo_bytes);
   fprintf(f, "repartition,time,%ld,%.6f,%.6f,\n", e->n_repartitions, s->repartition_max, s->repartition_mean);
   for (int r = 0; r < e->n_ranks; r++) {
