@@ -25,8 +25,8 @@ import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 MPIRUN = os.path.join(ROOT, "scripts", "mpirun")
-CASES = {"1phase": "cases/dambreak-1phase/case.yaml", "2phase": "cases/dambreak-2phase/case.yaml",
-         "3d": "scripts/bench/dambreak-3d.yaml"}
+CASES = {"1phase": "cases/dambreak-1phase/case.yaml", "2phase": "cases/dambreak-2phase/case.yaml"}
+CASE_FILES = dict(CASES, **{"3d": "scripts/bench/dambreak-3d.yaml"})   # with the cluster group's scene
 
 # Floating-point operations per neighbour pair of the main pass (pass_fluid_rhs.c, fluid_sums),
 # counted by hand from the source for a same-phase fluid pair in 2D (the most frequent kind):
@@ -50,7 +50,7 @@ QUICK = {"dx": {"1phase": [0.02, 0.0142, 0.01], "2phase": [0.024, 0.017, 0.012]}
          "steps": [10, 8, 6], "weak_dx": [0.024, 0.017, 0.012], "weak_steps": 6,
          "term_dx": 0.04, "term_steps": 6, "sp_dx": 0.01, "sp_steps": 10,
          "hdf5_particles": [100000], "repeats": 2, "peak_seconds": 0.3,
-         "cluster_ranks": [1, 2, 4, 8], "cluster_per_rank": 10000, "cluster_dx": 0.04, "cluster_steps": 2}
+         "cluster_ranks": [1, 2, 4], "cluster_per_rank": 10000, "cluster_dx": 0.04, "cluster_steps": 2}
 
 # The two-phase scene with every optional term on, and each term switched off in turn.
 TERMS_ON = ["physics.acoustic_damper=10", "physics.free_surface=on", "physics.tensile_control=true",
@@ -87,7 +87,7 @@ def run_case(exe, case, dx, steps, ranks, work, sets=()):
     """One run; returns the derived figures of its timings.csv."""
     out = os.path.join(work, "run")
     shutil.rmtree(out, ignore_errors=True)
-    cmd = [MPIRUN, "-n", str(ranks), exe, "run", CASES[case], "-o", out,
+    cmd = [MPIRUN, "-n", str(ranks), exe, "run", CASE_FILES[case], "-o", out,
            "--set", "resolution.dx=%g" % dx, "--set", "time.max_steps=%d" % steps,
            "--set", "output.interval=0", "--set", "output.stats_interval=1e9",
            "--set", "output.probes_interval=1e9", "--set", "output.progress_interval=1e9"]
@@ -99,7 +99,7 @@ def run_case(exe, case, dx, steps, ranks, work, sets=()):
 
 def memory_estimate(case, ranks, sets):
     """The bytes per rank `mpsph check --ranks` estimates for the run (its '# memory' line)."""
-    cmd = ["build/mpsph", "check", CASES[case], "--ranks", str(ranks)]
+    cmd = ["build/mpsph", "check", CASE_FILES[case], "--ranks", str(ranks)]
     for x in sets:
         cmd += ["--set", x]
     for line in sh(cmd).splitlines():
@@ -117,7 +117,7 @@ def tank_sets(width):
 
 def particles_of(case, dx, sets):
     """Fluid plus wall particles of a case (mpsph check)."""
-    cmd = ["build/mpsph", "check", CASES[case], "--set", "resolution.dx=%g" % dx]
+    cmd = ["build/mpsph", "check", CASE_FILES[case], "--set", "resolution.dx=%g" % dx]
     for x in sets:
         cmd += ["--set", x]
     for line in sh(cmd).splitlines():
@@ -231,6 +231,7 @@ class Bench:
                     self.say("sizes: %s dx=%g ranks=%d" % (case, dx, ranks))
                     runs = repeat(self.repeats, lambda: run_case("build/mpsph", case, dx, cfg["steps"][k], ranks, self.work))
                     self.res[("size", case, k, ranks)] = runs
+                    self.res[("estimate", case, k, ranks)] = memory_estimate(case, ranks, ["resolution.dx=%g" % dx])
 
     def weak(self):
         """Two-phase scene with about the same particles per rank on 1, 2 and 4 ranks."""

@@ -40,6 +40,7 @@ class Report:
         self.b, self.m, self.peaks, self.cfg, self.quick = b, m, peaks, cfg, quick
         self.flops_per_pair, self.main_pass = flops, main_pass
         self.md, self.rows, self.targets, self.notes = [], [], [], []
+        self.estimate_errors = []   # |estimate / peak - 1| of the runs of section 4
         self.peak = max(peaks)
 
     def w(self, *lines):
@@ -198,13 +199,18 @@ class Report:
                "`project_bytes_rankN` of timings.csv). Resident memory also holds the fixed cost of "
                "every process (the libraries' code and heaps), which is why small runs show more per "
                "particle.", "",
-               "| scene | particles | ranks | peak RSS B/particle | end RSS B/particle | of which file-backed | end PSS B/particle | project arrays B/particle | largest rank peak MB |",
-               "|---|---|---|---|---|---|---|---|---|")
+               "| scene | particles | ranks | peak RSS B/particle | end RSS B/particle | of which file-backed | end PSS B/particle | project arrays B/particle | largest rank peak MB | `check --ranks` estimate MB (/ peak) |",
+               "|---|---|---|---|---|---|---|---|---|---|")
         for (kind, case, k, ranks), runs in sorted((key, v) for key, v in self.b.res.items() if key[0] == "size"):
-            self.w("| %s | %d | %d | %s | %s | %.0f | %s | %.0f | %.1f |" % (
+            peak = med(col(runs, "rss_peak_max_rank"))
+            estimate = self.b.res.get(("estimate", case, k, ranks))
+            if estimate:
+                self.estimate_errors.append(abs(estimate / peak - 1))
+            self.w("| %s | %d | %d | %s | %s | %.0f | %s | %.0f | %.1f | %s |" % (
                 case, runs[0]["fluid"] + runs[0]["wall"], ranks, mmm(col(runs, "bytes_per_particle_peak"), "%.0f"),
                 mmm(col(runs, "bytes_per_particle_end"), "%.0f"), med(col(runs, "bytes_per_particle_file")),
-                mmm(col(runs, "bytes_per_particle_pss"), "%.0f"), med(col(runs, "bytes_per_particle_project")), med(col(runs, "rss_peak_max_rank")) / 1e6))
+                mmm(col(runs, "bytes_per_particle_pss"), "%.0f"), med(col(runs, "bytes_per_particle_project")),
+                peak / 1e6, "%.1f (%.2f)" % (estimate / 1e6, estimate / peak) if estimate else "-"))
         self.memory_owners()
         self.memory_marginal()
         self.memory_target()
@@ -216,8 +222,8 @@ class Report:
                "the ghosts' mirror offset and wall index; work = the scheme's per-particle arrays (those "
                "the halo reads sized to owned + halo slots, the RK4 state, sums and derivatives to the "
                "owned ones; optional ones only when their term is on); neighbour lists = one bit per "
-               "candidate of the cell stencil; cells = per-cell index and ownership (every rank holds "
-               "the whole grid) and the sort scratch; halo buffers = the messages of the halo rebuild "
+               "candidate of the cell stencil; cells = the owner of every top cell, the index of the "
+               "fine cells of the rank's region and halo reach, and the sort scratch; halo buffers = the messages of the halo rebuild "
                "and updates.", "",
                "| scene | ranks | particles | work | neighbour lists | cells | halo buffers | total | halo copies |",
                "|---|---|---|---|---|---|---|---|---|")
@@ -402,7 +408,7 @@ class Report:
                              True, ""))
 
     def target_table(self):
-        lines = ["## Targets (issue 6; 2D, double precision)", "", "| target | measured | verdict |", "|---|---|---|"]
+        lines = ["## Targets (issue 6 in 2D, double precision; issue 22 in 3D)", "", "| target | measured | verdict |", "|---|---|---|"]
         for name, value, ok, miss in self.targets:
             lines.append("| %s | %s | %s%s |" % (name, value, verdict(ok), "" if ok else " (" + miss + ")"))
         lines.append("")
@@ -490,15 +496,20 @@ class Report:
             proj = [runs[n]["project_max_rank"] / ((runs[n]["fluid"] + runs[n]["wall"]) / n) for n in big]
             peak = [runs[n]["rss_peak_max_rank"] for n in big]
             flat_p, flat_r = max(proj) / min(proj) - 1, max(peak) / min(peak) - 1
-            worst = max(abs(runs[n]["estimate"] / runs[n]["rss_peak_max_rank"] - 1) for n in ranks_list)
+            worst = max([abs(runs[n]["estimate"] / runs[n]["rss_peak_max_rank"] - 1) for n in ranks_list] +
+                        self.estimate_errors)
             self.w("", "From %d to %d ranks the largest rank's project arrays per particle it owns vary by %.1f %% "
                    "and its peak resident memory by %.1f %% (target: within 15 %% of flat). The estimate of "
-                   "`check --ranks` is within %.1f %% of the measured peak in every run above (target 20 %%)."
+                   "`check --ranks` is within %.1f %% of the measured peak in every run above and in the 2D "
+                   "runs of section 4 (target 20 %%)."
                    % (big[0], big[-1], 100 * flat_p, 100 * flat_r, 100 * worst), "")
             self.targets.append(("per-rank memory flat within 15 % from 8 to 64 ranks (3D weak scaling)",
-                                 "%.1f %% (peak resident)" % (100 * flat_r), flat_r <= 0.15))
-            self.targets.append(("memory estimate within 20 % of the measured peak (3D runs)",
-                                 "%.1f %% at worst" % (100 * worst), worst <= 0.20))
+                                 "%.1f %% (peak resident)" % (100 * flat_r), flat_r <= 0.15,
+                                 "%.1f %% over" % (100 * (flat_r - 0.15))))
+            self.targets.append(("`check --ranks` memory estimate within 20 % of the measured peak "
+                                 "(the 3D runs above and the 2D runs of section 4)",
+                                 "%.1f %% at worst" % (100 * worst), worst <= 0.20,
+                                 "%.1f %% over" % (100 * (worst - 0.20))))
         self.model(runs, ranks_list)
 
     def model(self, runs, ranks_list):

@@ -4,7 +4,8 @@ OUT/performance.md exist; the CSV has bench_report.py's columns, every number is
 median <= max, and each metric has the sign and range its definition allows; particle-steps/s
 per core is in a plausible range, agrees with the same run's main-pass figures, and no pass runs
 above the measured peak; every benchmark of the suite (scenes x ranks, weak scaling, each
-optional term, the single-phase build, the HDF5 sizes) has its rows in the CSV and in the
+optional term, the single-phase build, the HDF5 sizes, the 3D weak-scaling rank counts) has its
+rows in the CSV and in the
 report, whose sections and target verdicts are all there. Prints each problem and exits 1 if
 there is one.
 
@@ -22,9 +23,11 @@ import bench_report  # noqa: E402
 
 COLUMNS = ["group", "case", "particles", "ranks", "steps", "metric", "median", "min", "max", "repeats", "unit"]
 SECTIONS = ["## Targets", "## 1. Throughput", "## 2. Where", "## 3. Floating", "## 4. Memory",
-            "## 5. Parallel", "## 6. Snapshot", "## 7. Cost", "## 8. Single-phase", "## What bounds"]
-# Target verdicts: five, and the efficiency target's when a scene has bench_report.EFF_MIN_FLUID
-# fluid particles (not at the quick sizes).
+            "## 5. Parallel", "## 6. Snapshot", "## 7. Cost", "## 8. Single-phase", "## 9. Weak scaling",
+            "## What bounds"]
+# Target verdicts: five, the efficiency target's when a scene has bench_report.EFF_MIN_FLUID
+# fluid particles (not at the quick sizes), and the cluster group's two when it ran on 8 ranks or
+# more at two rank counts (not at the quick sizes).
 N_TARGETS = 5
 # Particle-steps/s per core. A particle-step is four RK stages over about 45 neighbours with at
 # least 62 flops per pair in the main pass alone (bench.FLOPS_PER_PAIR): over 1e4 flops, so
@@ -100,6 +103,9 @@ def expected_rows(cfg, n_sizes):
     want.update({("hdf5", "snapshot", ranks, "hdf5_over_raw_bandwidth"): len(cfg["hdf5_particles"]) for ranks in (1, 2)})
     want.update({("terms", "2phase", 1, "saving " + label): 1 for label, _ in bench.TERMS_OFF})
     want[("single_phase", "1phase", 1, "multiphase_over_single_build")] = 1
+    for ranks in cfg["cluster_ranks"]:
+        for metric in ("project_bytes_max_rank", "estimate_over_peak"):
+            want[("cluster", "3d", ranks, metric)] = 1
     return want
 
 
@@ -152,6 +158,7 @@ def report_problems(md, rows, cfg):
     out = ["performance.md: missing section %r" % s for s in SECTIONS if not re.search("^" + re.escape(s), md, re.M)]
     verdicts = len(re.findall(r"^\| .* \| \*\*(met|missed)\*\*", md, re.M))
     targets = N_TARGETS + any(r["group"] == "size" and int(r["particles"]) >= bench_report.EFF_MIN_FLUID for r in rows)
+    targets += 2 * (sum(n >= 8 for n in cfg["cluster_ranks"]) > 1)
     if verdicts != targets:
         out.append("performance.md: %d target verdicts, expected %d" % (verdicts, targets))
     if re.search(r"\b(nan|inf)\b", md, re.I):
@@ -163,6 +170,7 @@ def report_problems(md, rows, cfg):
     rows_wanted += [("build %r" % b, re.escape(b)) for b in ("multiphase (build/mpsph)", "SINGLE_PHASE=1")]
     rows_wanted += [("snapshot bandwidth, %d particles on %d ranks" % (n, ranks), r"%d \| \d+ \| %d" % (n, ranks))
                     for n in cfg["hdf5_particles"] for ranks in (1, 2)]
+    rows_wanted += [("3D weak scaling on %d ranks" % n, r"%d \| [0-9.]+ \| \d+ \| \d+" % n) for n in cfg["cluster_ranks"]]
     for what, pattern in rows_wanted:
         if not re.search(r"^\| %s \|" % pattern, md, re.M):
             out.append("performance.md: no table row for %s" % what)
