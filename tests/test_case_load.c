@@ -515,6 +515,55 @@ static void test_motion(void) {
                0, NULL, "case.yaml:13: walls.0.motion: starts displaced (|d(0)| = 0.01 m", "zero displacement");
 }
 
+/* A 3D case whose line 7 is the walls given. */
+static const char *case_3d(const char *walls) {
+  static char buf[1024];
+  snprintf(buf, sizeof buf, "name: t\ndimension: 3\nresolution: {dx: 0.1}\ntime: {end: 1}\n"
+           "domain: {min: [-1, -1, -1], max: [2, 2, 2]}\nphases: [{name: w, rho0: 1000, c0: 20}]\n%s\n", walls);
+  return buf;
+}
+
+/* The rotation axis: 3D only, kept as given and written back, z by default, the zero vector and
+ * a motion-level axis beside a law refused. */
+static void test_motion_axis(void) {
+  const char *roll = "walls: [{box: {min: [0, 0, 0], max: [1, 1, 1]}, motion: {rotation: {amplitude: 0.1, "
+                     "period: 1, centre: [0.5, 0.5, 0.5], axis: [2, 0, 0]}}}]";
+  const char *table = "walls: [{box: {min: [0, 0, 0], max: [1, 1, 1]}, motion: {centre: [0.5, 0, 0.5], "
+                      "axis: [0, -1, 0.5], table: [[0, 0, 0, 0, 0], [1, 0, 0, 0, 0.1]]}}]";
+  struct case_def c;
+  CHECK(load(case_3d(roll), 0, NULL, &c) == 0, "roll loads: %s", err);
+  const double *a = c.walls[0].motion.axis;
+  CHECK(a[0] == 2 && a[1] == 0 && a[2] == 0, "axis kept as given: [%g, %g, %g]", a[0], a[1], a[2]);
+  round_trip(case_3d(roll));
+  CHECK(load(case_3d(table), 0, NULL, &c) == 0, "table about an axis loads: %s", err);
+  CHECK(a[1] == -1 && a[2] == 0.5 && c.walls[0].motion.n_rows == 2, "table axis");
+  round_trip(case_3d(table));
+  CHECK(load(case_3d("walls: [{box: {min: [0, 0, 0], max: [1, 1, 1]}, motion: {rotation: {amplitude: 0.1, "
+                     "period: 1, centre: [0.5, 0.5, 0.5]}}}]"), 0, NULL, &c) == 0 &&
+        a[0] == 0 && a[1] == 0 && a[2] == 1, "the default axis is z: %s", err);
+  CHECK(load(variant(13, "walls: [{box: {min: [0, 0], max: [1, 1]}, motion: {translation: {amplitude: [0.1, 0], "
+                         "period: 1}}}]"), 0, NULL, &c) == 0 && a[0] == 0 && a[1] == 0 && a[2] == 1,
+        "2D: the axis is z: %s", err);
+  static const struct { int dim; const char *walls, *where, *what; } refused[] = {
+      {3, "walls: [{box: {min: [0, 0, 0], max: [1, 1, 1]}, motion: {rotation: {amplitude: 0.1, period: 1, "
+          "centre: [0.5, 0.5, 0.5], axis: [0, 0, 0]}}}]",
+       "case.yaml:7: walls.0.motion.rotation.axis: got a zero or overflowing vector", "a rotation axis of finite length"},
+      {3, "walls: [{box: {min: [0, 0, 0], max: [1, 1, 1]}, motion: {rotation: {amplitude: 0.1, period: 1, "
+          "centre: [0.5, 0.5, 0.5], axis: [1, 0]}}}]",
+       "case.yaml:7: walls.0.motion.rotation.axis: got a list of 2 items", "a list of 3 numbers"},
+      {3, "walls: [{box: {min: [0, 0, 0], max: [1, 1, 1]}, motion: {axis: [1, 0, 0], "
+          "rotation: {amplitude: 0.1, period: 1, centre: [0.5, 0.5, 0.5]}}}]",
+       "case.yaml:7: walls.0.motion.axis: got an axis without a table", "rotation.axis"},
+      {2, "walls: [{box: {min: [0, 0], max: [1, 1]}, motion: {rotation: {amplitude: 0.1, period: 1, "
+          "centre: [0.5, 0.5], axis: [0, 0, 1]}}}]",
+       "case.yaml:13: walls.0.motion.rotation.axis: got an axis in 2D", "turns about z"},
+      {2, "walls: [{box: {min: [0, 0], max: [1, 1]}, motion: {axis: [1, 0], table: [[0, 0, 0, 0], [1, 0, 0, 0.1]]}}]",
+       "case.yaml:13: walls.0.motion.axis: got an axis in 2D", "turns about z"}};
+  for (size_t i = 0; i < sizeof refused / sizeof refused[0]; i++)
+    expect_error(refused[i].dim == 3 ? case_3d(refused[i].walls) : variant(13, refused[i].walls), 0, NULL,
+                 refused[i].where, refused[i].what);
+}
+
 /* Probe kinds: their keys, the round trip, the keys of another kind, the sensor axis, the
  * probes.csv columns. */
 static void test_probe_kinds(void) {
@@ -591,6 +640,7 @@ int main(void) {
   test_motion();
   test_probe_kinds();
   test_motion_table();
+  test_motion_axis();
   test_lattice_origin();
   test_velocity_mode();
   unlink(path);

@@ -1,38 +1,40 @@
 /* test_motion.c — prescribed wall motion: the analytic velocity and acceleration of a body point
- * against central differences of its position, ramps, and the identity of an inactive motion. */
+ * against central differences of its position (2D, and 3D about a general axis), ramps, the
+ * identity of an inactive motion, and the 3D rotation: an orthonormal matrix turning by the angle
+ * about its axis, equal to the rotation about z with the axes permuted. */
 #include <math.h>
 #include <string.h>
 #include "check.h"
 #include "case/motion.h"
 
-/* Position of body point x_ref at time t. */
-static void position_at(const struct wall_motion *m, double t, const double *x_ref, double *x) {
+/* Position of body point x_ref at time t in dim dimensions. */
+static void position_at(const struct wall_motion *m, int dim, double t, const double *x_ref, double *x) {
   struct frame f;
   motion_frame(m, t, &f);
-  frame_position(&f, 2, x_ref, x);
+  frame_position(&f, dim, x_ref, x);
 }
 
 /* Velocity and acceleration of x_ref's point at t against central differences of step k [s]. */
-static void check_derivatives_step(const struct wall_motion *m, double t, double k, const char *what) {
-  const double x_ref[2] = {0.3, -0.2};
-  double xm[2], x0[2], xp[2], u[2], a[2];
+static void check_derivatives_dim(const struct wall_motion *m, int dim, double t, double k, const char *what) {
+  const double x_ref[3] = {0.3, -0.2, 0.15};
+  double xm[3], x0[3], xp[3], u[3], a[3];
   struct frame f;
-  position_at(m, t - k, x_ref, xm);
-  position_at(m, t + k, x_ref, xp);
+  position_at(m, dim, t - k, x_ref, xm);
+  position_at(m, dim, t + k, x_ref, xp);
   motion_frame(m, t, &f);
-  frame_position(&f, 2, x_ref, x0);
-  frame_velocity(&f, 2, x0, u);
-  frame_acceleration(&f, 2, x0, a);
-  for (int d = 0; d < 2; d++) {
+  frame_position(&f, dim, x_ref, x0);
+  frame_velocity(&f, dim, x0, u);
+  frame_acceleration(&f, dim, x0, a);
+  for (int d = 0; d < dim; d++) {
     double fd_u = (xp[d] - xm[d]) / (2 * k), fd_a = (xp[d] - 2 * x0[d] + xm[d]) / (k * k);
     CHECK_CLOSE(u[d], fd_u, 1e-7, what);
     CHECK_CLOSE(a[d], fd_a, 2e-4, what);
   }
 }
 
-/* check_derivatives_step with the step 1e-4 s. */
+/* check_derivatives_dim in 2D with the step 1e-4 s. */
 static void check_derivatives(const struct wall_motion *m, double t, const char *what) {
-  check_derivatives_step(m, t, 1e-4, what);
+  check_derivatives_dim(m, 2, t, 1e-4, what);
 }
 
 /* A table motion: passes through its rows, C2 (velocity and acceleration continuous across a
@@ -53,7 +55,7 @@ static void test_table(void) {
   }
   /* the spline's pieces of 0.1 s have a third derivative up to ~300 m/s^3 (it jumps at the
    * rows), so a step of 1e-5 s keeps the differences' error below 1e-8 */
-  for (double t = 0.03; t < 1.0; t += 0.043) check_derivatives_step(&m, t, 1e-5, "table");
+  for (double t = 0.03; t < 1.0; t += 0.043) check_derivatives_dim(&m, 2, t, 1e-5, "table");
   for (int i = 1; i < 4; i++) {   /* velocity and acceleration are continuous across the rows */
     motion_frame(&m, rows[i][0] - 1e-9, &f);
     motion_frame(&m, rows[i][0] + 1e-9, &g);
@@ -71,6 +73,111 @@ static void test_table(void) {
         f.v[0]);
 }
 
+/* The columns R e_j of the frame's rotation (frame_turn of the unit vectors) are orthonormal and
+ * right-handed; R leaves the axis k alone and turns a vector v normal to it by theta about k:
+ * v . Rv = |v|^2 cos theta, (v x Rv) . k = |v|^2 sin theta. */
+static void check_rotation(const struct frame *f, const char *what) {
+  double R[3][3], k[3], v[3], turned[3], kk = 0;
+  for (int j = 0; j < 3; j++) {
+    double e[3] = {j == 0, j == 1, j == 2};
+    frame_turn(f, 3, e, R[j]);   /* R[j] is column j */
+  }
+  for (int i = 0; i < 3; i++)
+    for (int j = 0; j < 3; j++)
+      CHECK_CLOSE(R[i][0] * R[j][0] + R[i][1] * R[j][1] + R[i][2] * R[j][2], i == j, 1e-15, what);
+  double det = R[0][0] * (R[1][1] * R[2][2] - R[1][2] * R[2][1]) - R[1][0] * (R[0][1] * R[2][2] - R[0][2] * R[2][1]) +
+               R[2][0] * (R[0][1] * R[1][2] - R[0][2] * R[1][1]);
+  CHECK_CLOSE(det, 1.0, 1e-15, what);
+  frame_turn(f, 3, f->axis, k);
+  for (int d = 0; d < 3; d++) CHECK_CLOSE(k[d], f->axis[d], 1e-15, what);
+  for (int d = 0; d < 3; d++) kk += f->axis[d] * (d == 1);   /* v = e_y minus its part along k */
+  for (int d = 0; d < 3; d++) v[d] = (d == 1) - kk * f->axis[d];
+  frame_turn(f, 3, v, turned);
+  double vv = v[0] * v[0] + v[1] * v[1] + v[2] * v[2], dot = 0, sine = 0;
+  for (int d = 0; d < 3; d++) {
+    dot += v[d] * turned[d];
+    sine += (v[(d + 1) % 3] * turned[(d + 2) % 3] - v[(d + 2) % 3] * turned[(d + 1) % 3]) * f->axis[d];
+  }
+  CHECK_CLOSE(dot, vv * cos(f->theta), 1e-15, what);
+  CHECK_CLOSE(sine, vv * sin(f->theta), 1e-15, what);
+}
+
+/* v with its axes permuted cyclically, x -> y -> z -> x: z goes to x. */
+static void permute(const double *v, double *out) {
+  out[0] = v[2], out[1] = v[0], out[2] = v[1];
+}
+
+/* A 3D motion turning about the z axis (the in-plane formulas) and the same motion with the axes
+ * permuted, turning about x (the rotation matrix): positions, inverse positions, turned offsets,
+ * velocities and accelerations are the permuted ones. */
+static void test_permuted_axes(const struct wall_motion *about_z) {
+  static struct wall_motion about_x;
+  about_x = *about_z;
+  permute(about_z->centre, about_x.centre);
+  permute(about_z->translation.amplitude, about_x.translation.amplitude);
+  permute(about_z->axis, about_x.axis);
+  const double x_ref[3] = {0.31, -0.17, 0.12};
+  double px_ref[3];
+  permute(x_ref, px_ref);
+  for (double t = 0.05; t < 2.0; t += 0.31) {
+    struct frame fz, fx;
+    double out[5][3], got[5][3];
+    motion_frame(about_z, t, &fz);
+    motion_frame(&about_x, t, &fx);
+    frame_position(&fz, 3, x_ref, got[0]);
+    frame_reference(&fz, 3, x_ref, got[1]);
+    frame_turn(&fz, 3, x_ref, got[2]);
+    frame_velocity(&fz, 3, x_ref, got[3]);
+    frame_acceleration(&fz, 3, x_ref, got[4]);
+    frame_position(&fx, 3, px_ref, out[0]);
+    frame_reference(&fx, 3, px_ref, out[1]);
+    frame_turn(&fx, 3, px_ref, out[2]);
+    frame_velocity(&fx, 3, px_ref, out[3]);
+    frame_acceleration(&fx, 3, px_ref, out[4]);
+    for (int q = 0; q < 5; q++) {
+      double want[3];
+      permute(got[q], want);
+      for (int d = 0; d < 3; d++) CHECK_CLOSE(out[q][d], want[d], 1e-14, "about x = about z with the axes permuted");
+    }
+  }
+}
+
+/* The rotation about a general axis in 3D: the matrix, the derivatives against central
+ * differences, the inverse, the axis's length left out, and the permuted-axes identity. */
+static void test_axis_3d(void) {
+  static struct wall_motion m;
+  memset(&m, 0, sizeof(m));
+  m.translation = (struct motion_law){.active = 1, .amplitude = {0.01, -0.004, 0.006}, .period = 0.9,
+                                      .ramp = RAMP_SMOOTH, .ramp_time = 0.5};
+  m.rotation = (struct motion_law){.active = 1, .amplitude = {0.3}, .period = 1.3, .ramp = RAMP_SMOOTH,
+                                   .ramp_time = 0.7};
+  m.centre[0] = 0.2, m.centre[1] = 0.1, m.centre[2] = -0.05;
+  const double axes[4][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, -2}, {1, -2, 0.5}};
+  for (int i = 0; i < 4; i++) {
+    memcpy(m.axis, axes[i], sizeof(m.axis));
+    struct frame f;
+    double x[3], back[3];
+    const double x_ref[3] = {0.4, -0.3, 0.25};
+    for (double t = 0.05; t < 2.0; t += 0.23) {
+      motion_frame(&m, t, &f);
+      check_rotation(&f, "rotation matrix");
+      check_derivatives_dim(&m, 3, t, 1e-4, "3D rotation about an axis, smooth ramp");
+      frame_position(&f, 3, x_ref, x);
+      frame_reference(&f, 3, x, back);
+      for (int d = 0; d < 3; d++) CHECK_CLOSE(back[d], x_ref[d], 1e-14, "3D frame_reference inverts frame_position");
+    }
+  }
+  struct frame f, g;
+  m.axis[0] = 0, m.axis[1] = 0, m.axis[2] = 3;   /* only the direction counts */
+  motion_frame(&m, 0.9, &f);
+  CHECK(f.axis[0] == 0 && f.axis[1] == 0 && f.axis[2] == 1, "axis [0, 0, 3] is z");
+  m.axis[0] = 2, m.axis[2] = 0;
+  motion_frame(&m, 0.9, &g);
+  CHECK(g.axis[0] == 1 && g.axis[1] == 0 && g.axis[2] == 0, "axis [2, 0, 0] is x");
+  m.axis[0] = 0, m.axis[2] = 1;
+  test_permuted_axes(&m);
+}
+
 int main(void) {
   struct wall_motion m;
   memset(&m, 0, sizeof(m));
@@ -82,7 +189,7 @@ int main(void) {
 
   m.translation = (struct motion_law){.active = 1, .amplitude = {0.01, 0.002}, .period = 0.83,
                                       .phase = -1.5707963267948966};   /* x = -A cos(w t) */
-  position_at(&m, 0.0, ref, x);
+  position_at(&m, 2, 0.0, ref, x);
   CHECK_CLOSE(x[0], ref[0] - 0.01, 1e-15, "x(0) = -A for -A cos(wt)");
   for (double t = 0.05; t < 2; t += 0.37) check_derivatives(&m, t, "translation");
 
@@ -100,5 +207,6 @@ int main(void) {
   motion_frame(&m, 0.0, &f);
   CHECK(f.theta == 0 && f.omega == 0, "a smooth ramp starts at rest: theta %g, rate %g", f.theta, f.omega);
   test_table();
+  test_axis_3d();
   return check_report("test_motion");
 }

@@ -1,6 +1,7 @@
-/* motion.h — prescribed rigid motion of a wall: a translation and (2D) a rotation about a centre,
- * each a sinusoid switched on by a ramp, or a table of time, displacement and angle interpolated
- * by cubic splines. Tank sloshing cases move their walls with it. */
+/* motion.h — prescribed rigid motion of a wall: a translation and a rotation about a fixed axis
+ * through a centre (z in 2D; any axis in 3D: roll, pitch, yaw), each a sinusoid switched on by a
+ * ramp, or a table of time, displacement and angle interpolated by cubic splines. Tank sloshing
+ * cases move their walls with it. */
 #ifndef MPSPH_MOTION_H
 #define MPSPH_MOTION_H
 
@@ -22,12 +23,14 @@ struct motion_law {
 #define MOTION_MAX_ROWS 256
 #define MOTION_TABLE_COLUMNS 5   /* t [s], dx, dy, dz [m], theta [rad] */
 
-/** The motion of a wall: x(t) = c + d(t) + R(theta(t)) (X - c) for a body point X at t = 0.
- *  With n_rows > 0 the table gives d and theta (the laws are then inactive): rows of
- *  MOTION_TABLE_COLUMNS values at strictly increasing times, dz = 0 in 2D. */
+/** The motion of a wall: x(t) = c + d(t) + R(theta(t)) (X - c) for a body point X at t = 0, R
+ *  the rotation by theta about the axis through c (right-handed). With n_rows > 0 the table
+ *  gives d and theta (the laws are then inactive): rows of MOTION_TABLE_COLUMNS values at
+ *  strictly increasing times, dz = 0 in 2D. */
 struct wall_motion {
   struct motion_law translation, rotation;
   double centre[3];      /* rotation centre at t = 0 [m] */
+  double axis[3];        /* rotation axis, any length but 0 ([0, 0, 1] in 2D) */
   int n_rows;            /* rows of the table, 0 = no table */
   double table[MOTION_MAX_ROWS][MOTION_TABLE_COLUMNS];
 };
@@ -38,6 +41,7 @@ struct frame {
   double d[3], v[3], a[3];             /* [m], [m/s], [m/s^2] */
   double theta, omega, alpha;          /* [rad], [rad/s], [rad/s^2] */
   double centre[3];                    /* rotation centre at t = 0 [m] */
+  double axis[3];                      /* unit rotation axis (3D; 2D turns about z) */
 };
 
 /** Evaluate the frame of motion m at time t [s]. A motion with no active law is the identity.
@@ -53,7 +57,12 @@ void frame_position(const struct frame *f, int dim, const double *x_ref, double 
 /** The body point (its position at t = 0) of the point now at x: the inverse of frame_position. */
 void frame_reference(const struct frame *f, int dim, const double *x, double *x_ref);
 
-/** Velocity [m/s] and acceleration [m/s^2] of the body point now at x. */
+/** The body-frame vector v (a direction or offset at t = 0) turned with the wall: R(theta) v
+ *  into out (which may be v). */
+void frame_turn(const struct frame *f, int dim, const double *v, double *out);
+
+/** Velocity [m/s] and acceleration [m/s^2] of the body point now at x: v + w x r and
+ *  a + alpha x r + w x (w x r), r = x - (c + d), w = omega axis, alpha = alpha axis. */
 void frame_velocity(const struct frame *f, int dim, const double *x, double *u);
 void frame_acceleration(const struct frame *f, int dim, const double *x, double *a);
 

@@ -53,9 +53,9 @@ static const char *const FLUID_KEYS[] = {"phase", "box", "circle", "polygon", "v
                                          "velocity_gradient", "velocity_mode", NULL};
 static const char *const MODE_KEYS[] = {"amplitude", "wavelength", "interface", NULL};
 static const char *const WALL_KEYS[] = {"box", "circle", "polygon", "slip", "fluid_side", "motion", NULL};
-static const char *const MOTION_KEYS[] = {"translation", "rotation", "table", "centre", NULL};
+static const char *const MOTION_KEYS[] = {"translation", "rotation", "table", "centre", "axis", NULL};
 static const char *const TRANSLATION_KEYS[] = {"amplitude", "period", "phase", "ramp", NULL};
-static const char *const ROTATION_KEYS[] = {"amplitude", "period", "phase", "ramp", "centre", NULL};
+static const char *const ROTATION_KEYS[] = {"amplitude", "period", "phase", "ramp", "centre", "axis", NULL};
 static const char *const RAMP_KEYS[] = {"shape", "time", NULL};
 static const char *const PROBE_KEYS[] = {"name", "kind", "position", "diameter", "axis",
                                          "interpolation", "phase", NULL};
@@ -667,13 +667,29 @@ static int read_table(const struct map *m, struct wall_motion *w) {
   return 0;
 }
 
-/* A table motion: the table and its rotation centre (default the origin); no law beside it. */
+/* The rotation axis under m's key axis (3D only; any length but 0, kept as given), [0, 0, 1] when
+ * absent: 2D cases turn about z. */
+static int read_axis(const struct map *m, struct wall_motion *w) {
+  char path[PATH_LEN];
+  const struct ynode *axis = get(m, "axis", path);
+  w->axis[0] = w->axis[1] = 0, w->axis[2] = 1;
+  if (!axis) return 0;
+  if (m->ld->dim != 3)
+    return fail(m->ld, axis, path, "got an axis in 2D, expected none: a 2D wall turns about z");
+  if (vec(m, "axis", 1, w->axis)) return 1;
+  double len = w->axis[0] * w->axis[0] + w->axis[1] * w->axis[1] + w->axis[2] * w->axis[2];
+  if (len == 0 || !isfinite(len))
+    return fail(m->ld, axis, path, "got a zero or overflowing vector, expected a rotation axis of finite length");
+  return 0;
+}
+
+/* A table motion: the table, its rotation centre (default the origin) and axis; no law beside it. */
 static int read_table_motion(const struct map *m, struct wall_motion *w) {
   const struct ynode *law = ytree_get(m->node, "translation") ? ytree_get(m->node, "translation")
                                                               : ytree_get(m->node, "rotation");
   if (law)
     return fail(m->ld, law, m->path, "got a table and a sinusoidal law, expected one of them");
-  return read_table(m, w) || vec(m, "centre", 0, w->centre);
+  return read_table(m, w) || vec(m, "centre", 0, w->centre) || read_axis(m, w);
 }
 
 /* The case's geometry is the wall at t = 0: a motion must start there (zero displacement and
@@ -697,14 +713,16 @@ static int read_motion(const struct map *wall, struct wall *w) {
   w->moving = m.node != NULL;
   if (!w->moving) return 0;
   if (ytree_get(m.node, "table")) return read_table_motion(&m, &w->motion) || check_motion_start(&m, &w->motion);
-  const struct ynode *centre = get(&m, "centre", path);
-  if (centre)
-    return fail(m.ld, centre, path, "got a centre without a table, expected rotation.centre for a "
-                "rotation law (motion.centre is the table's rotation centre)");
+  for (const char *const *key = (const char *const[]){"centre", "axis", NULL}; *key; key++) {
+    const struct ynode *table_key = get(&m, *key, path);
+    if (table_key)
+      return fail(m.ld, table_key, path, "got %s %s without a table, expected rotation.%s for a "
+                  "rotation law (motion.%s is the table's)", **key == 'a' ? "an" : "a", *key, *key, *key);
+  }
   return read_law(&m, "translation", TRANSLATION_KEYS, 1, &w->motion.translation, &translation) ||
          read_law(&m, "rotation", ROTATION_KEYS, 0, &w->motion.rotation, &rotation) ||
          (w->motion.rotation.active && vec(&rotation, "centre", 1, w->motion.centre)) ||
-         check_motion_start(&m, &w->motion);
+         read_axis(&rotation, &w->motion) || check_motion_start(&m, &w->motion);
 }
 
 static int read_wall(const struct map *m, struct case_def *c, int i) {
@@ -945,6 +963,7 @@ static void put_table(FILE *f, const struct wall_motion *m, int dim) {
     fputc('\n', f);
   }
   put_vec(f, "      ", "centre", m->centre, dim);
+  if (dim == 3) put_vec(f, "      ", "axis", m->axis, dim);
 }
 
 static void put_motion(FILE *f, const struct wall_motion *m, int dim) {
@@ -956,6 +975,7 @@ static void put_motion(FILE *f, const struct wall_motion *m, int dim) {
   put_law(f, "translation", &m->translation, 1, dim);
   put_law(f, "rotation", &m->rotation, 0, dim);
   if (m->rotation.active) put_vec(f, "        ", "centre", m->centre, dim);
+  if (m->rotation.active && dim == 3) put_vec(f, "        ", "axis", m->axis, dim);
 }
 
 

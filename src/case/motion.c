@@ -1,6 +1,7 @@
 /* motion.c — prescribed rigid wall motion: ramped sinusoids for the translation and the angle,
  * or a table interpolated by clamped cubic splines, with their first and second time
- * derivatives evaluated analytically. */
+ * derivatives evaluated analytically; the rotation about z in the plane (2D), or about any axis
+ * by its rotation matrix (3D). */
 #include <math.h>
 #include <string.h>
 #include "case/motion.h"
@@ -93,6 +94,8 @@ static void table_frame(const struct wall_motion *m, double t, struct frame *f) 
 void motion_frame(const struct wall_motion *m, double t, struct frame *f) {
   memset(f, 0, sizeof(*f));
   memcpy(f->centre, m->centre, sizeof(f->centre));
+  double len = sqrt(m->axis[0] * m->axis[0] + m->axis[1] * m->axis[1] + m->axis[2] * m->axis[2]);
+  for (int d = 0; d < 3; d++) f->axis[d] = m->axis[d] / len;
   if (m->n_rows > 0) {
     table_frame(m, t, f);
     return;
@@ -114,39 +117,104 @@ void motion_frame(const struct wall_motion *m, double t, struct frame *f) {
   }
 }
 
+/* 1 if the frame turns about z: always in 2D, and in 3D about the axis [0, 0, 1]. These keep the
+ * in-plane formulas (z untouched), so that their results do not depend on the general path; any
+ * other axis of a 3D frame takes the rotation matrix. */
+static int about_z(const struct frame *f, int dim) {
+  return dim == 2 || (f->axis[0] == 0 && f->axis[1] == 0 && f->axis[2] > 0);
+}
+
+/* R(theta) about the unit axis k (Rodrigues): R = cos I + sin [k]x + (1 - cos) k k^T, [k]x the
+ * matrix of k x .; out = R v, or R^T v (the inverse) when transpose. */
+static void rotate(const struct frame *f, int transpose, const double *v, double *out) {
+  const double *k = f->axis;
+  double c = cos(f->theta), s = sin(f->theta), R[3][3], w[3] = {v[0], v[1], v[2]};   /* v may be out */
+  for (int i = 0; i < 3; i++)
+    for (int j = 0; j < 3; j++) R[i][j] = (i == j ? c : 0) + (1 - c) * k[i] * k[j];
+  R[0][1] -= s * k[2], R[1][2] -= s * k[0], R[2][0] -= s * k[1];
+  R[1][0] += s * k[2], R[2][1] += s * k[0], R[0][2] += s * k[1];
+  for (int i = 0; i < 3; i++) out[i] = 0;
+  for (int i = 0; i < 3; i++)
+    for (int j = 0; j < 3; j++) out[i] += (transpose ? R[j][i] : R[i][j]) * w[j];
+}
+
 void frame_position(const struct frame *f, int dim, const double *x_ref, double *x) {
   double rx = x_ref[0] - f->centre[0], ry = x_ref[1] - f->centre[1];
+  if (!about_z(f, dim)) {
+    double r[3] = {rx, ry, x_ref[2] - f->centre[2]}, turned[3];
+    rotate(f, 0, r, turned);
+    for (int d = 0; d < 3; d++) x[d] = f->centre[d] + f->d[d] + turned[d];
+    return;
+  }
   double c = cos(f->theta), s = sin(f->theta);
   x[0] = f->centre[0] + f->d[0] + c * rx - s * ry;
   x[1] = f->centre[1] + f->d[1] + s * rx + c * ry;
   if (dim == 3) x[2] = x_ref[2] + f->d[2];
 }
 
+/* The arm x - (c + d) of the point now at x (its first dim components; the third is 0 in 2D). */
+static void arm(const struct frame *f, int dim, const double *x, double *r) {
+  r[2] = 0;
+  for (int d = 0; d < dim; d++) r[d] = x[d] - f->centre[d] - f->d[d];
+}
+
 void frame_reference(const struct frame *f, int dim, const double *x, double *x_ref) {
-  double rx = x[0] - f->centre[0] - f->d[0], ry = x[1] - f->centre[1] - f->d[1];
+  double r[3];
+  arm(f, dim, x, r);
+  if (!about_z(f, dim)) {
+    double back[3];
+    rotate(f, 1, r, back);
+    for (int d = 0; d < 3; d++) x_ref[d] = f->centre[d] + back[d];
+    return;
+  }
   double c = cos(f->theta), s = sin(f->theta);
-  x_ref[0] = f->centre[0] + c * rx + s * ry;
-  x_ref[1] = f->centre[1] - s * rx + c * ry;
+  x_ref[0] = f->centre[0] + c * r[0] + s * r[1];
+  x_ref[1] = f->centre[1] - s * r[0] + c * r[1];
   if (dim == 3) x_ref[2] = x[2] - f->d[2];
 }
 
-/* The arm x - (c + d) of the point now at x, in the plane of rotation. */
-static void arm(const struct frame *f, const double *x, double *r) {
-  r[0] = x[0] - f->centre[0] - f->d[0];
-  r[1] = x[1] - f->centre[1] - f->d[1];
+void frame_turn(const struct frame *f, int dim, const double *v, double *out) {
+  if (!about_z(f, dim)) {
+    rotate(f, 0, v, out);
+    return;
+  }
+  double c = cos(f->theta), s = sin(f->theta), vx = v[0];
+  out[0] = c * vx - s * v[1];
+  out[1] = s * vx + c * v[1];
+  if (dim == 3) out[2] = v[2];
+}
+
+/* out = k x r for the frame's axis k. */
+static void axis_cross(const struct frame *f, const double *r, double *out) {
+  const double *k = f->axis;
+  out[0] = k[1] * r[2] - k[2] * r[1];
+  out[1] = k[2] * r[0] - k[0] * r[2];
+  out[2] = k[0] * r[1] - k[1] * r[0];
 }
 
 void frame_velocity(const struct frame *f, int dim, const double *x, double *u) {
-  double r[2];
-  arm(f, x, r);
+  double r[3];
+  arm(f, dim, x, r);
+  if (!about_z(f, dim)) {   /* v + omega k x r */
+    double kr[3];
+    axis_cross(f, r, kr);
+    for (int d = 0; d < 3; d++) u[d] = f->v[d] + f->omega * kr[d];
+    return;
+  }
   u[0] = f->v[0] - f->omega * r[1];
   u[1] = f->v[1] + f->omega * r[0];
   if (dim == 3) u[2] = f->v[2];
 }
 
 void frame_acceleration(const struct frame *f, int dim, const double *x, double *a) {
-  double r[2], w2 = f->omega * f->omega;
-  arm(f, x, r);
+  double r[3], w2 = f->omega * f->omega;
+  arm(f, dim, x, r);
+  if (!about_z(f, dim)) {   /* a + alpha k x r + omega^2 (k (k . r) - r) */
+    double kr[3], along = f->axis[0] * r[0] + f->axis[1] * r[1] + f->axis[2] * r[2];
+    axis_cross(f, r, kr);
+    for (int d = 0; d < 3; d++) a[d] = f->a[d] + f->alpha * kr[d] + w2 * (f->axis[d] * along - r[d]);
+    return;
+  }
   a[0] = f->a[0] - f->alpha * r[1] - w2 * r[0];
   a[1] = f->a[1] + f->alpha * r[0] - w2 * r[1];
   if (dim == 3) a[2] = f->a[2];

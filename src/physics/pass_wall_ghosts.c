@@ -7,7 +7,6 @@
  *    largest Shepard weight at r* only, each neighbour's pressure carried to the ghost along its
  *    own hydrostatic and inertial gradient (Adami, Hu & Adams 2012, JCP 231:7057, Eq. 27):
  *    p_k = sum_j [p_j + rho_j (g - a_w).(r_k - r_j)] W V_j / sum_j W V_j. */
-#include <math.h>
 #include <string.h>
 #include "physics/passes.h"
 
@@ -118,12 +117,8 @@ void wall_mirror_point(const struct pass_ctx *ctx, long k, double *xs) {
   const struct parts *p = ctx->p;
   double off[3] = {0, 0, 0};
   for (int d = 0; d < p->dim; d++) off[d] = p->mirror[d][k];
-  if (ctx->c->walls[p->wall[k]].moving) {   /* the body-frame offset turned with the wall */
-    double c = cos(ctx->prm->frames[p->wall[k]].theta), s = sin(ctx->prm->frames[p->wall[k]].theta);
-    double ox = off[0];
-    off[0] = c * ox - s * off[1];
-    off[1] = s * ox + c * off[1];
-  }
+  if (ctx->c->walls[p->wall[k]].moving)   /* the body-frame offset turned with the wall */
+    frame_turn(&ctx->prm->frames[p->wall[k]], p->dim, off, off);
   for (int d = 0; d < 3; d++) xs[d] = d < p->dim ? p->x[d][k] + off[d] : 0.0;
 }
 
