@@ -12,8 +12,18 @@
 #define CASE_MAX_PROBES 64
 #define CASE_MAX_VERTICES 64
 
-enum scheme_kind { SCHEME_DELTA_PLUS = 0, SCHEME_DELTA_SPH, SCHEME_SAME_PHASE_CONTINUITY,
-                   SCHEME_GENERALIZED_DISSIPATION, SCHEME_RIEMANN, SCHEME_COUNT };
+/* The schemes, one line each: X(value of enum scheme_kind, its spelling in case files). The
+ * engine's scheme table (SCHEMES, src/engine/schemes.c) holds an entry per line. */
+#define SCHEME_LIST(X)                                          \
+  X(SCHEME_DELTA_PLUS, "delta-plus")                            \
+  X(SCHEME_DELTA_SPH, "delta-sph")                              \
+  X(SCHEME_SAME_PHASE_CONTINUITY, "same-phase-continuity")      \
+  X(SCHEME_GENERALIZED_DISSIPATION, "generalized-dissipation")  \
+  X(SCHEME_RIEMANN, "riemann")
+
+#define SCHEME_ENUM_VALUE(value, spelling) value,
+enum scheme_kind { SCHEME_LIST(SCHEME_ENUM_VALUE) SCHEME_COUNT };
+#undef SCHEME_ENUM_VALUE
 enum kernel_kind { KERNEL_GAUSSIAN = 0, KERNEL_WENDLAND_C2 };
 enum shape_kind { SHAPE_BOX = 0, SHAPE_CIRCLE, SHAPE_POLYGON };
 enum slip_kind { SLIP_FREE = 0, SLIP_NO };

@@ -25,9 +25,9 @@
 #define CASE_MAX_FILE_BYTES (1 << 20)   /* largest case file read [bytes] */
 
 /* Enumeration spellings, in the order of the enums of case.h. */
-static const char *const SCHEME_NAMES[] = {"delta-plus", "delta-sph", "same-phase-continuity",
-                                           "generalized-dissipation", "riemann", NULL};
-_Static_assert(sizeof SCHEME_NAMES / sizeof SCHEME_NAMES[0] == SCHEME_COUNT + 1, "a spelling per enum scheme_kind");
+#define SCHEME_SPELLING(value, spelling) spelling,
+static const char *const SCHEME_NAMES[] = {SCHEME_LIST(SCHEME_SPELLING) NULL};
+#undef SCHEME_SPELLING
 static const char *const KERNEL_NAMES[] = {"gaussian", "wendland-c2", NULL};
 static const char *const SHAPE_NAMES[] = {"box", "circle", "polygon", NULL};
 static const char *const SLIP_NAMES[] = {"free", "no", NULL};
