@@ -1,5 +1,5 @@
 /* schemes.h — the table of the schemes: for each value of enum scheme_kind (include/case/case.h,
- * spelled in case_load.c's SCHEME_NAMES) its feature bit, the case options it runs, its passes in
+ * one line of SCHEME_LIST there with its spelling) its feature bit, the case options it runs, its passes in
  * the pipeline, its time-step rule, its time stepping and what it refuses. The engine and the
  * command line dispatch through it (src/engine/schemes.c). */
 #ifndef MPSPH_SCHEMES_H
