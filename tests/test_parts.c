@@ -1,7 +1,10 @@
 /* test_parts.c — the particle field table (parts.h): it covers every member of struct parts
  * after the counts, each pointer once; in 2D and 3D, with and without walls, a pack of every
  * field (halo and migration) unpacked into other slots, parts_copy_one and growth by
- * parts_reserve keep every component's value bit for bit; parts_bytes counts every slot. */
+ * parts_reserve keep every component's value bit for bit; parts_bytes counts every slot. The
+ * kind table (kinds.h): every kind has a name and a work weight, each marker maps back to its
+ * kind, the phase indices to the fluid and -1 to the wall ghost, and part_has (the folded sets)
+ * answers what the table's rows say for every combination of properties. */
 #include <string.h>
 #include "check.h"
 #include "base/parts.h"
@@ -101,8 +104,29 @@ static void check_parts(int dim, int walls) {
   parts_free(&q);
 }
 
+/* The kind table and its marker. */
+static void check_kinds(void) {
+  for (int k = 0; k < KIND_COUNT; k++) {
+    const char *name = part_kinds[k].name;
+    CHECK(name && name[0], "kind %d has a name", k);
+    for (int q = 0; q < k && name; q++) CHECK(strcmp(name, part_kinds[q].name), "kinds %d and %d: one name", q, k);
+    CHECK(part_kinds[k].work > 0, "kind %d: work %d", k, part_kinds[k].work);
+    if (k != KIND_FLUID)
+      CHECK(kind_marker(k) < 0 && kind_of(kind_marker(k)) == (enum part_kind)k, "kind %d: marker %d maps back",
+            k, kind_marker(k));
+  }
+  for (int ph = 0; ph < 8; ph++) CHECK(kind_of(ph) == KIND_FLUID, "phase %d is fluid", ph);
+  CHECK(PHASE_WALL == -1 && kind_of(PHASE_WALL) == KIND_WALL, "the wall ghost's marker is -1 (the files' value)");
+  int wrong = 0;
+  for (unsigned props = 1; props < 32; props++)
+    for (int phase = -(KIND_COUNT - 1); phase < 3; phase++)
+      wrong += part_has(phase, props) != ((part_kinds[kind_of(phase)].properties & props) != 0);
+  CHECK(wrong == 0, "part_has: %d answers differ from the table's rows", wrong);
+}
+
 int main(void) {
   check_covers_struct();
+  check_kinds();
   for (int dim = 2; dim <= 3; dim++)
     for (int walls = 0; walls <= 1; walls++) check_parts(dim, walls);
   return check_report("test_parts");

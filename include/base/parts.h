@@ -4,8 +4,7 @@
 
 #include <stddef.h>
 #include <stdint.h>
-
-#define PHASE_WALL (-1)   /* phase value of fixed ghost (wall) particles */
+#include "base/kinds.h"
 
 /** Particle arrays. Indices [0, n_owned) are owned by this rank, sorted by (cell, id);
  *  [n_owned, n_owned + n_halo) are copies of neighbouring ranks' particles, sorted likewise.
@@ -18,7 +17,7 @@ struct parts {
   double *rho;         /* density [kg/m^3] */
   double *p;           /* pressure [Pa] */
   double *m;           /* mass [kg] */
-  int *phase;          /* phase index, PHASE_WALL for ghosts */
+  int *phase;          /* phase index of a fluid particle, else its kind's marker (base/kinds.h) */
   int64_t *id;         /* unique, stable id */
   int *cell;           /* global cell index */
   double *mirror[3];   /* ghosts: offset from the ghost to its interpolation point (the mirror across

@@ -213,18 +213,14 @@ int engine_adopt_partition(struct engine *e, const int64_t *weight);
  *  rank 0 (bad input). Collective. */
 int engine_generate(struct engine *e);
 
-/** Work units of a particle for the partition's weights: a fluid particle's pair passes cost
- *  about four times a ghost's interpolation. */
-static inline int engine_particle_work(int phase) { return phase == PHASE_WALL ? 2 : 8; }
-
 /** The largest distance a particle may move within one step: half the cell skin, so that the
  *  cells and neighbour lists built at the start of the step hold every pair in the kernel
  *  support at every stage [m]. */
 double engine_shift_max(const struct engine *e);
 
-/** 1 if slot i is a ghost of a moving wall. */
+/** 1 if slot i is of a kind that moves with its wall (KIND_ON_WALL) and that wall is moving. */
 static inline int engine_moving_ghost(const struct engine *e, long i) {
-  return e->p.phase[i] == PHASE_WALL && e->c->walls[e->p.wall[i]].moving;
+  return part_has(e->p.phase[i], KIND_ON_WALL) && e->c->walls[e->p.wall[i]].moving;
 }
 
 /** Make the work arrays hold at least the current particle capacity (the owned-only ones: the

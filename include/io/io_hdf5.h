@@ -37,8 +37,8 @@ struct checkpoint_extra {
 
 /** Write the owned particles of every rank to `path` collectively (hyperslab offsets from
  *  MPI_Exscan), first to `path`.tmp, renamed to `path` when complete. Fluid and wall particles
- *  are both written (phase = PHASE_WALL for walls). Returns 0, or 3 on I/O failure with a
- *  message in err (same return on every rank). */
+ *  are both written (phase = the kind's marker, -1, for walls: base/kinds.h). Returns 0, or 3
+ *  on I/O failure with a message in err (same return on every rank). */
 int hdf5_write_snapshot(const char *path, const struct snapshot_info *info,
                         const struct parts *p, MPI_Comm comm, char *err, size_t err_len);
 

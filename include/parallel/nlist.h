@@ -1,6 +1,6 @@
-/* nlist.h — per-step neighbour lists of the owned fluid particles (Verlet lists without a skin
- * of their own: the cell skin bounds how far particles may move within a step), stored as one
- * bit per candidate of the cell stencil. */
+/* nlist.h — per-step neighbour lists of the owned particles of the kinds that have one (KIND_LISTED
+ * in base/kinds.h: the fluid), Verlet lists without a skin of their own (the cell skin bounds how
+ * far particles may move within a step), stored as one bit per candidate of the cell stencil. */
 #ifndef MPSPH_NLIST_H
 #define MPSPH_NLIST_H
 
@@ -10,9 +10,9 @@
 
 /** The candidates of a particle are the slots of the cells around its cell (space.h
  *  neighbour_ranges), concatenated in global cell order then slot order; its list is a bit mask
- *  over them, bit b set when candidate b lies within the build radius. All fluid particles of a
- *  cell have masks of the same length, stored one after the other in slot order (wall ghosts
- *  have none), so a mask costs
+ *  over them, bit b set when candidate b lies within the build radius. All listed particles of a
+ *  cell have masks of the same length, stored one after the other in slot order (the other kinds,
+ *  wall ghosts, have none), so a mask costs
  *  ceil(candidates / 64) words instead of 4 bytes per neighbour, and reading it back yields the
  *  neighbours in the same fixed global order on any rank count. */
 struct nlist_cell {
@@ -48,7 +48,7 @@ static inline int neighbours_next(struct neighbours *nb, long *j) {
   return 1;
 }
 
-/** Build the masks of the owned fluid particles of p (wall ghosts get none): every other slot
+/** Build the masks of the owned listed particles of p (the other kinds get none): every other slot
  *  within `radius` [m] at the current positions. Grows the arrays (geometrically) only when
  *  they are too small. */
 void nlist_build(struct nlist *l, const struct space *s, const struct parts *p, double radius);
@@ -57,7 +57,7 @@ void nlist_build(struct nlist *l, const struct space *s, const struct parts *p, 
  *  cell, before the lists of its particles). */
 void nlist_enter_cell(struct nlist *l, const struct neighbour_ranges *r);
 
-/** The neighbours of the f-th fluid particle (counted from 0 in slot order) of owned cell number
+/** The neighbours of the f-th listed particle (counted from 0 in slot order) of owned cell number
  *  k (s->owned_cells[k]), as of the last build; nlist_enter_cell must have been called with the
  *  cell's ranges, whose candidates stay valid until the next call. */
 static inline struct neighbours nlist_of(const struct nlist *l, long k, long f) {
@@ -66,7 +66,7 @@ static inline struct neighbours nlist_of(const struct nlist *l, long k, long f) 
   return (struct neighbours){mask, l->candidates, words, 0, words ? mask[0] : 0};
 }
 
-/** An empty list (wall ghosts). */
+/** An empty list (the kinds without lists). */
 static inline struct neighbours nlist_none(void) { return (struct neighbours){0}; }
 
 /** Free the arrays. */

@@ -35,16 +35,17 @@ static inline double phase_viscosity_total(const struct pass_ctx *ctx, int ph) {
   return f->viscosity + ctx->c->alpha * ctx->prm->h * f->c0 * f->rho0 / (2.0 * (ctx->p->dim + 2));
 }
 
-/** Work on owned particle i with its neighbour list (empty for wall ghosts). */
+/** Work on owned particle i with its neighbour list (empty for the kinds without one). */
 typedef void (*particle_fn)(struct pass_ctx *ctx, long i, const struct neighbours *nb);
 
-/** Call fluid (or wall, for wall ghosts; either may be NULL) for every owned particle of the
- *  context's cells (ctx->cells, or every owned cell in global cell order), cell by cell in slot
- *  order; ctx->progress, if set, between cells. Each call may write only particle i's slots, so
- *  that the order of the cells changes no result. */
+/** Call fluid for every owned particle of a kind with a neighbour list (KIND_LISTED, base/kinds.h),
+ *  wall for the others (wall ghosts; either may be NULL), over the context's cells (ctx->cells,
+ *  or every owned cell in global cell order), cell by cell in slot order; ctx->progress, if set,
+ *  between cells. Each call may write only particle i's slots, so that the order of the cells
+ *  changes no result. */
 void pass_for_each_owned(struct pass_ctx *ctx, particle_fn fluid, particle_fn wall);
 
-/** Build the neighbour lists of the owned fluid particles within ctx->prm->list_radius (once per
+/** Build the neighbour lists of the owned listed (fluid) particles within ctx->prm->list_radius (once per
  *  step, at the first stage). */
 void pass_neighbour_lists(struct pass_ctx *ctx);
 
@@ -64,7 +65,8 @@ struct shepard {
 /** Called for each slot j within the kernel support of a point, with wv = W V_j [-]. */
 typedef void (*near_fn)(void *arg, const struct pass_ctx *ctx, long j, double wv);
 
-/** Call fn for every fluid particle (and wall ghost if with_walls) within the kernel support of
+/** Call fn for every fluid particle (and boundary particle, KIND_BOUNDARY: wall ghost, if
+ *  with_walls) within the kernel support of
  *  xs, over the cells around xs's cell in global cell order; returns the number of calls. */
 long visit_near(const struct pass_ctx *ctx, const double *xs, int with_walls, near_fn fn, void *arg);
 

@@ -27,10 +27,13 @@ static void report(const struct engine *e, const char *msg) {
   if (e->rank == 0) fprintf(stderr, "mpsph: %s\n", msg);
 }
 
+/* Work units of owned particle i for the partition's weights: its kind's (base/kinds.h). */
+static int particle_work(const struct engine *e, long i) { return part_kinds[kind_of(e->p.phase[i])].work; }
+
 /* Work units of this rank's owned particles. */
 static double rank_work(const struct engine *e) {
   double work = 0;
-  for (long i = 0; i < e->p.n_owned; i++) work += engine_particle_work(e->p.phase[i]);
+  for (long i = 0; i < e->p.n_owned; i++) work += particle_work(e, i);
   return work;
 }
 
@@ -49,7 +52,7 @@ static int64_t *top_cell_weights(const struct engine *e) {
   long n = e->space.top.n_cells;
   int64_t *w = mem_calloc(n, sizeof(int64_t), "top cell weights");
   double factor = cost_factor(e);
-  for (long i = 0; i < e->p.n_owned; i++) w[space_top_of(&e->space, e->p.cell[i])] += engine_particle_work(e->p.phase[i]);
+  for (long i = 0; i < e->p.n_owned; i++) w[space_top_of(&e->space, e->p.cell[i])] += particle_work(e, i);
   for (long c = 0; c < n; c++) w[c] = (int64_t)llround((double)w[c] * factor);
   if (e->rank == 0) {
     MPI_Reduce(MPI_IN_PLACE, w, (int)n, MPI_INT64_T, MPI_SUM, 0, e->comm);

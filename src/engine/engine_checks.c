@@ -25,8 +25,9 @@ static long first_non_finite(const struct engine *e, const char **what) {
   const struct parts *p = &e->p;
   for (long i = 0; i < p->n_owned; i++) {
     *what = "moved farther within one step than the cell skin allows (time step too large)";
-    if ((p->phase[i] != PHASE_WALL || engine_moving_ghost(e, i)) && moved_too_far(e, i)) return i;
-    if (p->phase[i] == PHASE_WALL) continue;
+    int integrated = part_has(p->phase[i], KIND_INTEGRATED);
+    if ((integrated || engine_moving_ghost(e, i)) && moved_too_far(e, i)) return i;
+    if (!integrated) continue;
     *what = "drho/dt";
     if (!isfinite(e->w.drho[i])) return i;
     for (int d = 0; d < p->dim; d++) {
@@ -79,7 +80,7 @@ static int out_of_band(const struct engine *e, long i, char *what, size_t len) {
 /* The first owned fluid particle inside a solid or out of its density band, or -1. */
 static long first_bad_state(const struct engine *e, char *what, size_t len) {
   for (long i = 0; i < e->p.n_owned; i++)
-    if (e->p.phase[i] != PHASE_WALL && (in_solid(e, i, what, len) || out_of_band(e, i, what, len)))
+    if (part_has(e->p.phase[i], KIND_INTEGRATED) && (in_solid(e, i, what, len) || out_of_band(e, i, what, len)))
       return i;
   return -1;
 }
@@ -96,7 +97,7 @@ static long largest_acceleration(const struct engine *e, double *a_max) {
   struct { double a2; int rank; } local = {-1, e->rank}, global;
   long best = -1;
   for (long i = 0; i < e->p.n_owned; i++) {
-    if (e->p.phase[i] == PHASE_WALL) continue;
+    if (!part_has(e->p.phase[i], KIND_INTEGRATED)) continue;
     double a2 = 0;
     for (int d = 0; d < e->p.dim; d++) a2 += e->w.dv[d][i] * e->w.dv[d][i];
     if (a2 > local.a2) local.a2 = a2, best = i;

@@ -367,7 +367,7 @@ static void reduce_first_stage(struct engine *e, double *a_max, double *adv_max)
   for (long i = 0; i < p->n_owned; i++) {
     int ph = p->phase[i];
     if (engine_moving_ghost(e, i)) max2[1] = fmax(max2[1], wall_speed2(e, i));
-    if (ph == PHASE_WALL) continue;
+    if (!part_has(ph, KIND_INTEGRATED)) continue;
     double a2 = 0, w2 = 0;
     for (int d = 0; d < p->dim; d++) {
       double w = p->v[d][i] + (e->w.du[d] ? e->w.du[d][i] : 0.0);
@@ -505,7 +505,7 @@ static void rk_update(struct engine *e, const struct rk_scheme *rk, int s, const
   const int last = s == rk->stages - 1, threshold = (e->prm.features & FEAT_SAME_PHASE_CONTINUITY) != 0;
   double ws = rk->weight[s], step = !last ? rk->next[s] * e->dt : e->dt / rk->divisor;
   for (long i = 0; i < p->n_owned; i++) {
-    if (p->phase[i] == PHASE_WALL) continue;
+    if (!part_has(p->phase[i], KIND_INTEGRATED)) continue;
     for (int d = 0; d < p->dim; d++) {
       double dxdt = p->v[d][i] + (w->du[d] ? w->du[d][i] : 0.0);
       w->sum_x[d][i] = (s ? w->sum_x[d][i] : 0) + ws * dxdt;

@@ -76,7 +76,8 @@ static void fluid_maxima(struct engine *e, int light_only, double *m) {
   const struct parts *p = &e->p;
   m[0] = m[1] = m[2] = 0;
   for (long i = 0; i < p->n_owned; i++) {
-    if (p->phase[i] == PHASE_WALL || (light_only && !riemann_light_phase(e->c, p->phase[i]))) continue;
+    if (!part_has(p->phase[i], KIND_INTEGRATED) || (light_only && !riemann_light_phase(e->c, p->phase[i])))
+      continue;
     double q[3] = {0, 0, 0};
     for (int d = 0; d < p->dim; d++) {
       double s = p->x[d][i] - e->w.x0[d][i];
@@ -141,7 +142,7 @@ static void transport_velocity(struct engine *e, double *a_tv) {
 static void move(struct engine *e, double scale, int by_acceleration) {
   struct parts *p = &e->p;
   for (long i = 0; i < p->n_owned; i++)
-    for (int d = 0; d < p->dim && p->phase[i] != PHASE_WALL; d++)
+    for (int d = 0; d < p->dim && part_has(p->phase[i], KIND_INTEGRATED); d++)
       p->x[d][i] += scale * (by_acceleration ? e->w.dv[d][i] : p->v[d][i]);
 }
 
@@ -149,7 +150,7 @@ static void move(struct engine *e, double scale, int by_acceleration) {
 static void compress(struct engine *e, double scale) {
   struct parts *p = &e->p;
   for (long i = 0; i < p->n_owned; i++) {
-    if (p->phase[i] == PHASE_WALL) continue;
+    if (!part_has(p->phase[i], KIND_INTEGRATED)) continue;
     p->rho[i] += scale * e->w.drho[i];
     p->p[i] = eos_pressure(&e->c->phases[p->phase[i]], p->rho[i]);
   }
@@ -159,7 +160,7 @@ static void compress(struct engine *e, double scale) {
 static void accelerate(struct engine *e, double dt) {
   struct parts *p = &e->p;
   for (long i = 0; i < p->n_owned; i++)
-    for (int d = 0; d < p->dim && p->phase[i] != PHASE_WALL; d++) p->v[d][i] += dt * e->w.dv[d][i];
+    for (int d = 0; d < p->dim && part_has(p->phase[i], KIND_INTEGRATED); d++) p->v[d][i] += dt * e->w.dv[d][i];
 }
 
 /* The time-step check of engine_check_dt on step dt [s] of the named limit. Returns 0 or 2. */

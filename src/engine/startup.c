@@ -45,8 +45,8 @@ static void count_node(void *ctx, const double *x, int source, long ordinal) {
     q->outside = 1;
     return;
   }
-  int phase = source < q->e->c->n_fluids ? 0 : PHASE_WALL;
-  q->weight[space_top_of(s, cell)] += engine_particle_work(phase);
+  enum part_kind kind = source < q->e->c->n_fluids ? KIND_FLUID : KIND_WALL;
+  q->weight[space_top_of(s, cell)] += part_kinds[kind].work;
 }
 
 /* Agree on the first row where bad input was found (bad_row: this rank's, or -1); rank 0 prints

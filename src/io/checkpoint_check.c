@@ -206,34 +206,51 @@ struct particle_bounds {
   long n_particles;
   double mirror_reach;        /* a ghost lies within the wall thickness of its wall, so its
                                  mirror offset within twice that [m] */
+  int lowest_phase;           /* the lowest phase value of a row: the lowest marker of the kinds
+                                 the case can hold (0: fluid only) */
+  char phase_why[160];        /* what the phase values mean, for the message */
 };
+
+/* The kinds besides fluid that p can hold (those of a wall only with the wall arrays): their
+ * lowest marker and the words of the phase rule ("an index into phases, or -1 for a wall
+ * ghost") into b. */
+static void held_kinds(const struct parts *p, struct particle_bounds *b) {
+  size_t len = sizeof b->phase_why, at = (size_t)snprintf(b->phase_why, len, "an index into phases");
+  b->lowest_phase = 0;
+  for (int k = 0; k < KIND_COUNT; k++) {
+    if (k == KIND_FLUID || (!p->wall && (part_kinds[k].properties & KIND_ON_WALL))) continue;
+    if (kind_marker(k) < b->lowest_phase) b->lowest_phase = kind_marker(k);
+    if (at < len)
+      at += (size_t)snprintf(b->phase_why + at, len - at, ", or %d for a %s", kind_marker(k), part_kinds[k].name);
+  }
+  if (b->lowest_phase == 0) snprintf(b->phase_why + at, len - at, ": the case has no walls");
+}
 
 /* The rules of particle i of p. */
 static int particle_rules(const struct parts *p, long i, const struct particle_bounds *b,
                           struct rule *r) {
   const struct case_def *c = b->c;
-  int n = 0, walls = p->wall != NULL, ghost = p->phase[i] == PHASE_WALL;
+  const int ph = p->phase[i], held = ph >= b->lowest_phase;   /* kind_of(ph) is in the table */
+  int n = 0, walls = p->wall != NULL, on_wall = held && part_has(ph, KIND_ON_WALL);
+  int mirrored = held && part_has(ph, KIND_MIRRORED);
   r[n++] = integer_rule("/particles/id", (double)p->id[i], 0, (double)(b->n_particles - 1),
                         "the ids are 0 to n_particles - 1, each once");
-  r[n++] = integer_rule("/particles/phase", p->phase[i], walls ? PHASE_WALL : 0,
-                        c->n_phases - 1,
-                        walls ? "an index into phases, or -1 for a wall ghost"
-                              : "an index into phases: the case has no walls");
+  r[n++] = integer_rule("/particles/phase", ph, b->lowest_phase, c->n_phases - 1, b->phase_why);
   if (walls)
-    r[n++] = ghost ? integer_rule("/particles/wall", p->wall[i], 0, c->n_walls - 1,
-                                  "a wall ghost's index into walls")
-                   : integer_rule("/particles/wall", p->wall[i], -1, -1, "-1 for a fluid particle");
+    r[n++] = on_wall ? integer_rule("/particles/wall", p->wall[i], 0, c->n_walls - 1,
+                                    "a wall ghost's index into walls")
+                     : integer_rule("/particles/wall", p->wall[i], -1, -1, "-1 for a fluid particle");
   for (int d = 0; d < p->dim; d++)
     r[n++] = in_column(real_rule("/particles/position", p->x[d][i], c->domain_min[d],
                                  c->domain_max[d], 0, "inside the domain"), d);
   for (int d = 0; d < p->dim; d++)
     r[n++] = in_column(finite_rule("/particles/velocity", p->v[d][i]), d);
   for (int d = 0; walls && d < p->dim; d++)
-    r[n++] = in_column(ghost ? real_rule("/particles/mirror", p->mirror[d][i], -b->mirror_reach,
-                                         b->mirror_reach, ROUNDED,
-                                         "a ghost's mirror point is within twice the wall "
-                                         "thickness")
-                             : finite_rule("/particles/mirror", p->mirror[d][i]), d);
+    r[n++] = in_column(mirrored ? real_rule("/particles/mirror", p->mirror[d][i], -b->mirror_reach,
+                                            b->mirror_reach, ROUNDED,
+                                            "a ghost's mirror point is within twice the wall "
+                                            "thickness")
+                                : finite_rule("/particles/mirror", p->mirror[d][i]), d);
   r[n++] = real_rule("/particles/density", p->rho[i], 0, INFINITY, OPEN_MIN | OPEN_MAX, NULL);
   r[n++] = finite_rule("/particles/pressure", p->p[i]);
   r[n++] = real_rule("/particles/mass", p->m[i], 0, INFINITY, OPEN_MIN | OPEN_MAX, NULL);
@@ -394,7 +411,8 @@ int checkpoint_check(const struct engine *e, const struct case_def *c,
   struct rule r[MAX_RULES];
   long mine = e->p.n_owned, first_row = 0, n_particles = info->n_particles;
   struct particle_bounds bounds = {c, n_particles,
-                                   2 * init_wall_layers(c, e->prm.kern.support) * c->dx};
+                                   2 * init_wall_layers(c, e->prm.kern.support) * c->dx, 0, ""};
+  held_kinds(&e->p, &bounds);
   MPI_Exscan(&mine, &first_row, 1, MPI_LONG, MPI_SUM, e->comm);
   if (e->rank == 0) first_row = 0;   /* MPI_Exscan leaves rank 0's result undefined */
   int bad = check_rules(r, run_rules(e, c, x, r), -1, NULL, why, len) ||

@@ -163,7 +163,7 @@ static void swap_step_start(struct engine *e) {
       t = p->v[d][i], p->v[d][i] = e->w.v0[d][i], e->w.v0[d][i] = t;
     }
     t = p->rho[i], p->rho[i] = e->w.rho0[i], e->w.rho0[i] = t;
-    if (p->phase[i] != PHASE_WALL) p->p[i] = eos_pressure(&e->c->phases[p->phase[i]], p->rho[i]);
+    if (part_has(p->phase[i], KIND_INTEGRATED)) p->p[i] = eos_pressure(&e->c->phases[p->phase[i]], p->rho[i]);
   }
 }
 
@@ -226,7 +226,7 @@ static void write_stats(struct engine *e) {
   double sum[3 * CASE_MAX_PHASES + 4] = {0}, dev[CASE_MAX_PHASES] = {0};
   for (long i = 0; i < p->n_owned; i++) {
     int ph = p->phase[i];
-    if (ph == PHASE_WALL) continue;
+    if (!part_has(ph, KIND_INTEGRATED)) continue;
     double v2 = 0;
     for (int d = 0; d < dim; d++) {
       v2 += p->v[d][i] * p->v[d][i];

@@ -48,11 +48,11 @@ static double current_file_rss_bytes(void) { return proc_kb_line("/proc/self/sta
 static double current_pss_bytes(void) { return proc_kb_line("/proc/self/smaps_rollup", "Pss:"); }
 
 void engine_global_counts(const struct engine *e, double *n_fluid, double *n_wall) {
-  double local[2] = {0, 0}, total[2];
-  for (long i = 0; i < e->p.n_owned; i++) local[e->p.phase[i] == PHASE_WALL]++;
-  MPI_Allreduce(local, total, 2, MPI_DOUBLE, MPI_SUM, e->comm);
-  *n_fluid = total[0];
-  *n_wall = total[1];
+  double local[KIND_COUNT] = {0}, total[KIND_COUNT];
+  for (long i = 0; i < e->p.n_owned; i++) local[kind_of(e->p.phase[i])]++;
+  MPI_Allreduce(local, total, KIND_COUNT, MPI_DOUBLE, MPI_SUM, e->comm);
+  *n_fluid = total[KIND_FLUID];
+  *n_wall = total[KIND_WALL];
 }
 
 static double max_over_ranks(const struct engine *e, double x) {

@@ -28,23 +28,23 @@ static void mark_neighbours(const struct nlist *l, const struct parts *p, long i
     }
 }
 
-/* Fluid particles of cell c. */
-static long fluid_in_cell(const struct space *s, const struct parts *p, long c) {
+/* Particles of cell c that have a neighbour list (of a KIND_LISTED kind, base/kinds.h). */
+static long listed_in_cell(const struct space *s, const struct parts *p, long c) {
   long n = 0;
   long first = space_cell_first(s, c), end = first + space_cell_size(s, c);
-  for (long i = first; i < end; i++) n += p->phase[i] != PHASE_WALL;
+  for (long i = first; i < end; i++) n += part_has(p->phase[i], KIND_LISTED);
   return n;
 }
 
-/* Place the masks of the n_fluid fluid particles of owned cell k (stencil ranges r) from word n
+/* Place the masks of the n_listed listed particles of owned cell k (stencil ranges r) from word n
  * on; returns the words they take. */
-static long place_cell(struct nlist *l, long k, const struct neighbour_ranges *r, long n_fluid, long n) {
+static long place_cell(struct nlist *l, long k, const struct neighbour_ranges *r, long n_listed, long n) {
   long candidates = 0;
   for (int q = 0; q < r->n; q++) candidates += r->count[q];
   int words = (int)((candidates + WORD_BITS - 1) / WORD_BITS);
   l->candidates = grow(l->candidates, &l->candidate_capacity, candidates, sizeof(int));
   l->cells[k] = (struct nlist_cell){n, words};
-  return words * n_fluid;
+  return words * n_listed;
 }
 
 void nlist_build(struct nlist *l, const struct space *s, const struct parts *p, double radius) {
@@ -55,11 +55,11 @@ void nlist_build(struct nlist *l, const struct space *s, const struct parts *p, 
     long c = s->owned_cells[k], first = space_cell_first(s, c), end = first + space_cell_size(s, c);
     struct neighbour_ranges r;
     neighbour_ranges(s, c, &r);
-    long words = place_cell(l, k, &r, fluid_in_cell(s, p, c), n);
+    long words = place_cell(l, k, &r, listed_in_cell(s, p, c), n);
     l->bits = grow(l->bits, &l->capacity, n + words, sizeof(uint64_t));
     if (words > 0) memset(l->bits + n, 0, words * sizeof(uint64_t));   /* bits may still be NULL */
     for (long i = first; i < end; i++) {
-      if (p->phase[i] == PHASE_WALL) continue;
+      if (!part_has(p->phase[i], KIND_LISTED)) continue;
       mark_neighbours(l, p, i, &r, l->bits + n);
       n += l->cells[k].words;
     }

@@ -88,7 +88,9 @@ static inline __attribute__((always_inline)) void fluid_sums(const struct pass_c
     if (r2 >= support2) continue;
     n_pairs++;
     const double fv = kernel_f(&ctx->prm->kern, r2) * vol[j];
-    const int rel = phase[j] == PHASE_WALL ? PAIR_WALL : (!PHASES || phase[j] == ph) ? PAIR_SAME : PAIR_OTHER;
+    const int rel = part_has(phase[j], KIND_BOUNDARY) ? PAIR_WALL
+                    : (!PHASES || phase[j] == ph)      ? PAIR_SAME
+                                                       : PAIR_OTHER;
     /* other phase: a fluid particle of another phase, or a ghost standing for one (rho0 of
      * another phase), so that fluid and ghost neighbours of a phase act alike */
     const int other = weighted && (rel == PAIR_OTHER || (rel == PAIR_WALL && rho[j] != rho0i));

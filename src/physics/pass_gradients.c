@@ -46,14 +46,14 @@ static inline __attribute__((always_inline)) int gradients_of(struct pass_ctx *c
     }
     if (r2 >= support2) continue;
     double fv = kernel_f(&ctx->prm->kern, r2) * vol[j];
-    if (weighted && phase[j] != ph && phase[j] != PHASE_WALL)
+    if (weighted && phase[j] != ph && !part_has(phase[j], KIND_BOUNDARY))
       div += fv * dvdx * 2.0 * rho_state[j] / (rho_state[i] + rho_state[j]);
     else
       div += fv * dvdx;
     n_nb++;
     if (shift)
       for (int d = 0; d < dim; d++) sum_gw[d] += fv * dx[d];
-    if (!renorm || (multi ? phase[j] != ph : phase[j] == PHASE_WALL)) continue;
+    if (!renorm || (multi ? phase[j] != ph : part_has(phase[j], KIND_BOUNDARY))) continue;
     double drho = rho[j] - rhoi;
     for (int a = 0; a < dim; a++) {
       g[a] += drho * fv * dx[a];

@@ -16,15 +16,15 @@ void pass_for_each_owned(struct pass_ctx *ctx, particle_fn fluid, particle_fn wa
     struct neighbour_ranges r;
     neighbour_ranges(s, c, &r);
     nlist_enter_cell(ctx->nl, &r);
-    long f = 0;   /* fluid particles of the cell before slot i */
+    long f = 0;   /* particles of the cell with a neighbour list before slot i */
     for (long i = first; i < first + count; i++) {
-      int is_wall = p->phase[i] == PHASE_WALL;
-      particle_fn fn = is_wall ? wall : fluid;
+      int listed = part_has(p->phase[i], KIND_LISTED);
+      particle_fn fn = listed ? fluid : wall;
       if (fn) {
-        struct neighbours nb = is_wall ? nlist_none() : nlist_of(ctx->nl, k, f);
+        struct neighbours nb = listed ? nlist_of(ctx->nl, k, f) : nlist_none();
         fn(ctx, i, &nb);
       }
-      f += !is_wall;
+      f += listed;
     }
   }
 }

@@ -31,7 +31,7 @@ static long colour_gradient(const struct pass_ctx *ctx, long i, const struct nei
     double dx[3], r2 = pair_separation(p, dim, i, j, dx);
     if (r2 >= ctx->prm->kern.support2) continue;
     pairs++;
-    if (p->phase[j] == ph || p->phase[j] == PHASE_WALL) continue;
+    if (p->phase[j] == ph || part_has(p->phase[j], KIND_BOUNDARY)) continue;
     double fv = kernel_f(&ctx->prm->kern, r2) * ctx->w->vol[j];
     for (int d = 0; d < dim; d++) grad_chi[d] += fv * dx[d];
   }
@@ -92,7 +92,7 @@ static double curvature_of(const struct pass_ctx *ctx, long i, const struct neig
   double g[9] = {0}, b[9] = {0};   /* row-major dim x dim */
   struct neighbours it = *nb;
   for (long j; neighbours_next(&it, &j);) {
-    if (p->phase[j] == PHASE_WALL) continue;
+    if (part_has(p->phase[j], KIND_BOUNDARY)) continue;
     double dx[3], r2 = pair_separation(p, dim, i, j, dx), phi = p->phase[j] == ph ? 1.0 : -1.0, nj2 = 0;
     for (int d = 0; d < dim; d++) nj2 += nrm[d][j] * nrm[d][j];
     if (r2 >= ctx->prm->kern.support2 || nj2 == 0) continue;

@@ -18,7 +18,7 @@ long visit_near(const struct pass_ctx *ctx, const double *xs, int with_walls, ne
   neighbour_ranges(ctx->space, grid_cell_clamped(&ctx->space->grid, xs), &r);
   for (int k = 0; k < r.n; k++)
     for (long j = r.start[k]; j < r.start[k] + r.count[k]; j++) {
-      if (p->phase[j] == PHASE_WALL && !with_walls) continue;
+      if (part_has(p->phase[j], KIND_BOUNDARY) && !with_walls) continue;
       double r2 = 0;
       for (int d = 0; d < dim; d++) r2 += (xs[d] - p->x[d][j]) * (xs[d] - p->x[d][j]);
       if (r2 >= ctx->prm->kern.support2) continue;
@@ -126,7 +126,7 @@ void pass_wall_ghosts(struct pass_ctx *ctx) {
   struct parts *p = ctx->p;
   long pairs = 0;
   for (long k = 0; k < p->n_owned; k++) {
-    if (p->phase[k] != PHASE_WALL) continue;
+    if (!part_has(p->phase[k], KIND_MIRRORED)) continue;
     double xs[3];
     wall_mirror_point(ctx, k, xs);
     struct shepard s;

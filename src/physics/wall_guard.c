@@ -76,7 +76,7 @@ void pass_wall_guard(struct pass_ctx *ctx) {
   double guard = guard_distance(ctx), n[3], u_wall[3], a_wall[3], v[3], a[3], du[3], zero[3] = {0, 0, 0};
   int dim = p->dim;
   for (long i = 0; i < p->n_owned; i++) {
-    if (p->phase[i] == PHASE_WALL) continue;
+    if (!part_has(p->phase[i], KIND_INTEGRATED)) continue;
     for (int w = 0; w < ctx->c->n_walls; w++) {
       if (!near_wall(ctx, i, w, guard, n, u_wall, a_wall)) continue;
       for (int k = 0; k < dim; k++) v[k] = p->v[k][i], a[k] = ctx->w->dv[k][i];
@@ -95,7 +95,7 @@ long wall_guard_apply(const struct pass_ctx *ctx) {
   long hits = 0;
   if (!(guard > 0)) return 0;
   for (long i = 0; i < p->n_owned; i++) {
-    if (p->phase[i] == PHASE_WALL) continue;
+    if (!part_has(p->phase[i], KIND_INTEGRATED)) continue;
     for (int w = 0; w < ctx->c->n_walls; w++) {
       if (!near_wall(ctx, i, w, guard, n, u_wall, a_wall)) continue;
       for (int k = 0; k < dim; k++) v[k] = p->v[k][i];

@@ -25,7 +25,7 @@
 /* The sound speed of pair (i, j): the larger c0 of the two phases, c0_i beside a ghost [m/s]. */
 static double pair_sound_speed(const struct pass_ctx *ctx, int phi, int phj) {
   double ci = ctx->c->phases[phi].c0;
-  return phj == PHASE_WALL ? ci : fmax(ci, ctx->c->phases[phj].c0);
+  return part_has(phj, KIND_BOUNDARY) ? ci : fmax(ci, ctx->c->phases[phj].c0);
 }
 
 /* Gamma_i and the renormalised pressure gradient of owned fluid particle i. */
@@ -67,7 +67,7 @@ void pass_gd_gradients(struct pass_ctx *ctx) { pass_for_each_owned(ctx, gd_gradi
  * per unit F V]. dx = r_i - r_j, r2 = |dx|^2. */
 static double dissipation_pair(const struct pass_ctx *ctx, long i, long j, const double *dx, double r2) {
   const struct parts *p = ctx->p;
-  const int dim = p->dim, wall = p->phase[j] == PHASE_WALL;
+  const int dim = p->dim, wall = part_has(p->phase[j], KIND_BOUNDARY);
   double vcf = 2.0 * p->rho[i] / (p->rho[i] + p->rho[j]);
   double k = vcf / pair_sound_speed(ctx, p->phase[i], p->phase[j]), corr = 0.0;
   for (int d = 0; d < dim; d++) {
@@ -93,7 +93,7 @@ static void gd_rhs(struct pass_ctx *ctx, long i, const struct neighbours *nb) {
     double dx[3], r2 = pair_separation(p, dim, i, j, dx), dvdx = 0;
     if (r2 >= ctx->prm->kern.support2) continue;
     double fv = kernel_f(&ctx->prm->kern, r2) * vol[j];
-    double muj = p->phase[j] == PHASE_WALL ? mui : mu[p->phase[j]];
+    double muj = part_has(p->phase[j], KIND_BOUNDARY) ? mui : mu[p->phase[j]];
     double mu_ij = 2.0 * harmonic_mean(mui, muj);
     double visc = mu_ij * fv * r2 / (r2 + eta2), pg = pgi + pres[j] / gam[j];
     for (int d = 0; d < dim; d++) {

@@ -44,7 +44,7 @@ static void reinit_of(struct pass_ctx *ctx, long i, const struct neighbours *nb)
   long n = 0;
   struct neighbours it = *nb;
   for (long j; neighbours_next(&it, &j);) {
-    if (!light && p->phase[j] != PHASE_WALL && p->phase[j] != ph) continue;
+    if (!light && !part_has(p->phase[j], KIND_BOUNDARY) && p->phase[j] != ph) continue;
     double dx[3], r2 = pair_separation(p, p->dim, i, j, dx);
     if (r2 >= ctx->prm->kern.support2) continue;
     sum += kernel_w(&ctx->prm->kern, r2);

@@ -63,7 +63,7 @@ static inline __attribute__((always_inline)) void riemann_sums(const struct pass
     }
     if (r2 >= support2 || r2 <= 0) continue;
     n++;
-    const int wall = phase[j] == PHASE_WALL;
+    const int wall = part_has(phase[j], KIND_BOUNDARY);
     double pj = pres[j], rhoj = rho[j], cj, etaj;
     if (wall) {
       pj = wall_dummy(ctx, ci, j, dx, vj, dim);

@@ -28,7 +28,7 @@ static void shepard_pressure(struct pass_ctx *ctx, long i, const struct neighbou
   long pairs = 0;
   struct neighbours it = *nb;
   for (long j; neighbours_next(&it, &j);) {
-    if (p->phase[j] == PHASE_WALL) continue;
+    if (part_has(p->phase[j], KIND_BOUNDARY)) continue;
     double dx[3], r2 = pair_separation(p, p->dim, i, j, dx);
     if (r2 >= support2) continue;
     double wv = kernel_w(&ctx->prm->kern, r2) * vol[j];
@@ -92,7 +92,7 @@ static void spc_sums(const struct pass_ctx *ctx, long i, const struct neighbours
     (*pairs)++;
     for (int d = 0; d < dim; d++) dvdx += (p->v[d][j] - p->v[d][i]) * dx[d];
     const double fv = kernel_f(&ctx->prm->kern, r2) * vol[j];   /* gW_ij = fv (r_i - r_j) */
-    const int wall = p->phase[j] == PHASE_WALL, same = p->phase[j] == ph;
+    const int wall = part_has(p->phase[j], KIND_BOUNDARY), same = p->phase[j] == ph;
     const double p_star = same || wall || conventional ? pres[j] : p_tilde[j];
     const double rho_star = same ? rho[j] : eos_density(fi, p_star);
     const double mu_ij = harmonic_mean(mu[ph], wall ? mu[ph] : mu[p->phase[j]]);
