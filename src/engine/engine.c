@@ -81,7 +81,7 @@ static long *mirror_cells(struct engine *e, long *n) {
   long *cells = mem_calloc(p->n_owned + 1, sizeof(long), "mirror point cells");
   *n = 0;
   for (long k = 0; k < p->n_owned; k++) {
-    if (p->phase[k] != PHASE_WALL) continue;
+    if (!part_has(p->phase[k], KIND_MIRRORED)) continue;
     double xs[3];
     wall_mirror_point(&ctx, k, xs);
     cells[(*n)++] = grid_cell_clamped(&e->space.grid, xs);
