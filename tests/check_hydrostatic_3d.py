@@ -65,10 +65,11 @@ def main(run, tol=0.02, t_start=0.0):
           + ", ".join(f"{n} {100 * d:.3f} %" for n, d in zip(names, drift)) + " (limit 0.5 %)")
     ok = far.max() <= tol and stray.max() == 0 and finite.all() and max(drift) < 0.005
     print("PASS" if ok else "FAIL")
-    return 0 if ok else 1
+    return int(not ok)
 
 
 if __name__ == "__main__":
-    if len(sys.argv) not in (2, 3, 4):
+    args = sys.argv[1:]
+    if not 1 <= len(args) <= 3:
         sys.exit(__doc__)
-    sys.exit(main(sys.argv[1], *map(float, sys.argv[2:])))
+    sys.exit(main(args[0], *(float(a) for a in args[1:])))
