@@ -61,9 +61,11 @@ def read_reference(path):
 
 # --- two-phase hydrostatic tank (paper 000 section 3.1) -------------------------------------
 
-def hydrostatic_exact(y, h_w=1.0, rho_w=1000.0, rho_a=1.0):
-    """Pressure of water (0..Hw) under air (Hw..2Hw) with p = 0 at the lid [Pa]."""
-    return np.where(y >= h_w, rho_a * G * (2 * h_w - y), rho_a * G * h_w + rho_w * G * (h_w - y))
+def hydrostatic_exact(y, h_w=1.0, rho_w=1000.0, rho_a=1.0, lid=None, g=G):
+    """Pressure of water (0..Hw) under air (Hw..lid, lid = 2Hw unless given) with p = 0 at the
+    lid [Pa]; g [m/s^2]."""
+    lid = 2 * h_w if lid is None else lid
+    return np.where(y >= h_w, rho_a * g * (lid - y), rho_a * g * (lid - h_w) + rho_w * g * (h_w - y))
 
 
 def background_pressure(run):
@@ -98,39 +100,59 @@ def hydrostatic_1phase(run, dx):
 
 # --- oscillating drop (paper 001 section III.B, notes section 3.8) --------------------------
 
-def drop_analytic(t_end, omega=1.0, radius=1.0, n=20000):
-    """RK4 of the incompressible elliptic drop: da/dt = A a, dA/dt = (A^2 + w^2)(b^2 - a^2)/(a^2 + b^2),
-    b = R^2/a, a(0) = R, A(0) = w (notes section 3.8), in n steps to t_end. Returns t, a(t) and the
-    centre-pressure factor K = (dA/dt + A^2 + w^2) a^2 (p_c = K (rho_in + 3 rho_out)/8 for two
-    fluids, rho K/2 for one)."""
+def drop_affine(t_end, rates, omega=1.0, radius=1.0, n=20000):
+    """RK4 of the incompressible ellipsoidal drop in the potential 1/2 w^2 r^2, in any dimension d
+    (doc/theory.md section 7b): the affine flow u_k = A_k x_k (sum A_k = 0) keeps a ball of radius R
+    an ellipsoid with semi-axes a_k, da_k/dt = A_k a_k, dA_k/dt = K / a_k^2 - A_k^2 - w^2,
+    K = (sum A_k^2 + d w^2) / sum a_k^-2 (zero pressure on the surface); a_k(0) = R, A_k(0) = rates
+    [1/s], n steps to t_end. Returns t, a (n + 1 rows of d) and K, which sets the pressure
+    p = (rho/2)(K - sum_k K x_k^2 / a_k^2): centre pressure rho K / 2 for one fluid, K (rho_in +
+    3 rho_out) / 8 for a drop of half the radius inside another fluid."""
+    def k_factor(a, amp):
+        return (np.sum(amp * amp) + len(a) * omega * omega) / np.sum(1 / (a * a))
+
     def rhs(q):
-        a, amp = q
-        b = radius * radius / a
-        return np.array([amp * a, (amp * amp + omega * omega) * (b * b - a * a) / (a * a + b * b)])
+        a, amp = np.split(q, 2)
+        return np.concatenate([amp * a, k_factor(a, amp) / (a * a) - amp * amp - omega * omega])
     dt = t_end / n
-    q = np.empty((n + 1, 2))
-    q[0] = (radius, omega)
+    q = np.empty((n + 1, 2 * len(rates)))
+    q[0] = np.concatenate([np.full(len(rates), radius), rates])
     for k in range(n):
         k1 = rhs(q[k])
         k2 = rhs(q[k] + 0.5 * dt * k1)
         k3 = rhs(q[k] + 0.5 * dt * k2)
         k4 = rhs(q[k] + dt * k3)
         q[k + 1] = q[k] + dt / 6 * (k1 + 2 * k2 + 2 * k3 + k4)
-    dadt = np.array([rhs(v)[1] for v in q])
-    return np.linspace(0, t_end, n + 1), q[:, 0], (dadt + q[:, 1] ** 2 + omega ** 2) * q[:, 0] ** 2
+    a, amp = np.split(q, 2, axis=1)
+    return np.linspace(0, t_end, n + 1), a, np.array([k_factor(*v) for v in zip(a, amp)])
+
+
+def drop_analytic(t_end, omega=1.0, radius=1.0, n=20000):
+    """The 2D drop of paper 001 (notes section 3.8), drop_affine with A(0) = (w, -w): t, the
+    semi-axis a(t) along x and K (for 2D, da/dt = A a, dA/dt = (A^2 + w^2)(b^2 - a^2)/(a^2 + b^2),
+    b = R^2/a)."""
+    t, a, k_factor = drop_affine(t_end, np.array([omega, -omega]), omega, radius, n)
+    return t, a[:, 0], k_factor
+
+
+def semi_axes(s):
+    """Semi-axes [m] of the particles of a snapshot dict s along the coordinate axes, from their
+    volume-weighted second moments about their centroid: a_k = sqrt((d + 2) <x_k^2>), exact for
+    a uniform ellipsoid in d dimensions aligned with the axes."""
+    vol = s["mass"] / s["density"]
+    x = s["position"] - np.sum(vol[:, None] * s["position"], axis=0) / vol.sum()
+    return np.sqrt((x.shape[1] + 2) * np.sum(vol[:, None] * x * x, axis=0) / vol.sum())
 
 
 def drop_semi_axis(run, dx, radius=1.0):
-    """Max |a_SPH - a| / R over the snapshots; a_SPH = 2 sqrt(<x^2>) of the drop (phase 0),
-    volume-weighted (exact for a uniform ellipse); R the drop's radius [m] (omega = 1)."""
+    """Max |a_SPH - a| / R over the snapshots; a_SPH the semi-axis along x of the drop (phase 0),
+    semi_axes; R the drop's radius [m] (omega = 1)."""
     ts, a_sph = [], []
     for path in snapshots(run):
         t, s = read_snapshot(path)
         inner = s["phase"] == 0
-        vol = s["mass"][inner] / s["density"][inner]
-        xc = s["position"][inner, 0] - np.sum(vol * s["position"][inner, 0]) / vol.sum()
         ts.append(t)
-        a_sph.append(2 * math.sqrt(np.sum(vol * xc * xc) / vol.sum()))
+        a_sph.append(semi_axes({k: v[inner] for k, v in s.items()})[0])
     t_ref, a_ref, _ = drop_analytic(max(ts), radius=radius)
     err = np.max(np.abs(np.array(a_sph) - np.interp(ts, t_ref, a_ref))) / radius
     return err, "%d snapshots to t = %.3g s" % (len(ts), max(ts)), {"t": np.array(ts), "a": np.array(a_sph),
@@ -629,33 +651,36 @@ def bubble_rise(run, dx, reference):
     return e["v_c"], notes, {"t": t, "v": v_c, "y": y_c, "t_ref": e["v_c_ref"][0], "v_ref": e["v_c_ref"][1]}
 
 
-# --- static bubble (Laplace jump sigma / R in 2D) -------------------------------------------
+# --- static bubble (Laplace jump sigma / R in 2D, 2 sigma / R in 3D) ------------------------
 
 def static_bubble_state(path, h):
-    """Time [s], equivalent radius sqrt(sum V / pi) of the inner phase (phase 1) [m], p_in - p_out
-    [Pa] (mean pressure of the inner phase within R - 3h of the centre minus that of the outer
-    phase beyond R + 3h), the largest fluid speed [m/s] and the count of particles 3h or more on
-    the other phase's side of R, of one snapshot."""
+    """Time [s], equivalent radius of the inner phase (phase 1) [m] (sqrt(sum V / pi) in 2D,
+    (3 sum V / (4 pi))^(1/3) in 3D), p_in - p_out [Pa] (mean pressure of the inner phase within
+    R - 3h of the centre minus that of the outer phase beyond R + 3h), the largest fluid speed
+    [m/s] and the count of particles 3h or more on the other phase's side of R, of one snapshot."""
     t, s = read_snapshot(path)
     inner = s["phase"] == 1
-    r = np.hypot(s["position"][:, 0], s["position"][:, 1])
-    radius = np.sqrt(np.sum(s["mass"][inner] / s["density"][inner]) / np.pi)
+    r = np.linalg.norm(s["position"], axis=1)
+    volume = np.sum(s["mass"][inner] / s["density"][inner])
+    radius = np.sqrt(volume / np.pi) if s["position"].shape[1] == 2 else np.cbrt(3 * volume / (4 * np.pi))
     core, far = inner & (r < radius - 3 * h), ~inner & (r > radius + 3 * h)
     jump = s["pressure"][core].mean() - s["pressure"][far].mean()
     stray = np.sum(inner & (r >= radius + 3 * h)) + np.sum(~inner & (r <= radius - 3 * h))
-    return t, radius, jump, np.hypot(s["velocity"][:, 0], s["velocity"][:, 1]).max(), stray
+    return t, radius, jump, np.linalg.norm(s["velocity"], axis=1).max(), stray
 
 
 def static_bubble_series(run, t_start=0.01):
-    """Rows of static_bubble_state over the snapshots from t_start on, and sigma [N/m]."""
+    """Rows of static_bubble_state over the snapshots from t_start on, and the Laplace jump times
+    R, (d - 1) sigma [N/m] (sigma in 2D, 2 sigma in 3D)."""
     case = read_config(run)
     h = case["resolution"]["dx"] * case["resolution"]["h_over_dx"]
     rows = np.array([static_bubble_state(p, h) for p in snapshots(run)])
-    return rows[rows[:, 0] >= t_start - 1e-12], case["physics"]["surface_tension"]
+    return rows[rows[:, 0] >= t_start - 1e-12], (case["dimension"] - 1) * case["physics"]["surface_tension"]
 
 
 def laplace_jump(run, dx, t_start=0.01):
-    """Static bubble: |<p_in - p_out> / (sigma / <R>) - 1| over the snapshots from t_start on."""
+    """Static bubble: |<p_in - p_out> / ((d - 1) sigma / <R>) - 1| over the snapshots from t_start
+    on (sigma written for (d - 1) sigma below)."""
     rows, sigma = static_bubble_series(run, t_start)
     t, radius, jump, u_max, stray = rows.T
     err = abs(jump.mean() / (sigma / radius.mean()) - 1)
