@@ -309,7 +309,8 @@ static int op_runs(const struct engine *e, int k) { return !e->ops[k].once_per_s
 void engine_evaluate(struct engine *e, int skip_state_halo) {
   for (int k = skip_state_halo ? 1 : 0; k < e->n_ops; k++) {
     if (!op_runs(e, k)) continue;
-    int overlap = !e->ops[k].pass && k + 1 < e->n_ops && e->ops[k + 1].cellwise && op_runs(e, k + 1);
+    int overlap = e->n_ranks > 1 && !e->ops[k].pass && k + 1 < e->n_ops && e->ops[k + 1].cellwise &&
+                  op_runs(e, k + 1);   /* one rank has no halo to wait for */
     if (overlap) run_overlapped(e, k++);
     else engine_run_op(e, k);
   }
