@@ -27,8 +27,8 @@ expect 0 "^\| \`physics.delta\` \| number" -- build/mpsph keys
 expect 0 "# particles: 625 fluid" -- build/mpsph check "$case"
 expect 0 "# memory: about [0-9.]+ MB per rank on 1 rank \(1117 particles with the halo at 440 bytes" -- build/mpsph check "$case"
 # --ranks N: the estimate per rank for N ranks (a share and its halo), check only, N a whole number.
-expect 0 "# memory: about [0-9.]+ MB per rank on 8 ranks \(1117 particles with the halo" -- build/mpsph check "$case" --ranks 8
-expect 0 "# memory: about [0-9.]+ MB per rank on 4 ranks \(16463 particles with the halo" -- \
+expect 0 "# memory: about [0-9.]+ MB per rank on 8 ranks \(439 particles with the halo" -- build/mpsph check "$case" --ranks 8
+expect 0 "# memory: about [0-9.]+ MB per rank on 4 ranks \(11872 particles with the halo" -- \
   build/mpsph check "$case" --set resolution.dx=0.005 --ranks 4
 expect 1 "^mpsph: --ranks: got '0', expected a whole number of ranks from 1" -- build/mpsph check "$case" --ranks 0
 expect 1 "^mpsph: --ranks: got '2x'" -- build/mpsph check "$case" --ranks 2x

@@ -7,7 +7,8 @@ detection, surface tension, shifting, the interface options (interface_pressure,
 interface_viscosity, interface_mode, interface_sharpness), the scheme-specific model switches
 (spc_model, dissipation_form), the number of ranks and re-partitioning every step. Every run
 also evaluates every kind of probe and writes stats and probes rows at every step. The word
-levels are read from the loader's tables in src/case/case_load.c, so a new scheme, kernel or option
+levels are read from the loader's tables in src/case/case_load.c (the schemes from SCHEME_LIST in
+include/case/case.h), so a new scheme, kernel or option
 word enters the design by itself.
 
 Every pair of levels that some accepted combination holds is held by an accepted combination
@@ -46,6 +47,16 @@ def loader_words(source, table):
     return re.findall(r'"([^"]*)"', m.group(1))
 
 
+def scheme_words():
+    """The spellings of the schemes: the lines X(SCHEME_..., "word") of SCHEME_LIST in
+    include/case/case.h (the loader's SCHEME_NAMES is made from it)."""
+    with open(os.path.join(ROOT, "include", "case", "case.h")) as f:
+        words = re.findall(r'X\(SCHEME_\w+, "([^"]*)"\)', f.read())
+    if not words:
+        sys.exit("combinations.py: SCHEME_LIST not found in include/case/case.h")
+    return words
+
+
 def loader_range(source, rule):
     """The integers lo..hi of the loader's integer rule `rule` ({"...", lo, open, hi, 1})."""
     m = re.search(r"\b%s\s*=\s*\{\"[^\"]*\",\s*(\d+),\s*0,\s*(\d+),\s*1\}" % rule, source)
@@ -59,7 +70,7 @@ def factors():
     with open(os.path.join(ROOT, "src", "case", "case_load.c")) as f:
         src = f.read()
     return [
-        ("scheme", loader_words(src, "SCHEME_NAMES")),
+        ("scheme", scheme_words()),
         ("dimension", ["2", "3"]),
         ("kernel", loader_words(src, "KERNEL_NAMES")),
         ("h_over_dx", H_OVER_DX),

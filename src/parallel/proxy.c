@@ -120,7 +120,8 @@ static int by_owner_and_cell(const void *a, const void *b) {
 static struct wanted_cell *wanted_cells(const struct space *s, int layers, const long *reads, long n_reads,
                                         long *n) {
   struct wanted w = {.seen = mem_calloc(s->n_local_tops * s->cells_per_top + 1, 1, "halo cell marks"),
-                     .nb = mem_calloc(grid_stencil_size(&s->grid, layers), sizeof(long), "halo cell stencil")};
+                     .nb = mem_calloc(grid_stencil_size(&s->grid, layers), sizeof(long), "halo cell stencil"),
+                     .cells = mem_calloc(1, sizeof(struct wanted_cell), "halo cells wanted"), .cap = 1};
   int beyond = 0;
   for (long k = 0; k < s->n_owned_cells; k++) beyond |= want_around(&w, s, s->owned_cells[k], layers);
   for (long k = 0; k < n_reads && !beyond; k++) beyond |= want_around(&w, s, reads[k], 1);
@@ -130,7 +131,7 @@ static struct wanted_cell *wanted_cells(const struct space *s, int layers, const
     free(w.cells);
     return NULL;
   }
-  qsort(w.cells, w.n, sizeof(*w.cells), by_owner_and_cell);
+  if (w.n > 1) qsort(w.cells, w.n, sizeof(*w.cells), by_owner_and_cell);
   *n = w.n;
   return w.cells;
 }
