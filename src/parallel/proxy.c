@@ -115,8 +115,8 @@ static int by_owner_and_cell(const void *a, const void *b) {
 }
 
 /* The foreign cells within `layers` of an owned cell or within one layer of a cell of
- * reads[0..n_reads), sorted by owner and global index; *n their number. Returns NULL (after a
- * message) when a read cell's neighbours lie beyond the halo's reach. */
+ * reads[0..n_reads), sorted by owner and global index; *n their number. Returns NULL when a read
+ * cell's neighbours lie beyond the halo's reach (the caller stops the run: beyond_reach). */
 static struct wanted_cell *wanted_cells(const struct space *s, int layers, const long *reads, long n_reads,
                                         long *n) {
   struct wanted w = {.seen = mem_calloc(s->n_local_tops * s->cells_per_top + 1, 1, "halo cell marks"),
