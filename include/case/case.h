@@ -81,13 +81,31 @@ struct fluid_region {
   struct velocity_mode mode; /* added to the initial velocity when active */
 };
 
+/** The degrees of freedom of a rigid body (bits of struct body's fixed): translations along x,
+ *  y, z and rotations about the case axes (2D: x, y and the rotation about z). */
+enum { BODY_DOF_X = 1, BODY_DOF_Y = 2, BODY_DOF_Z = 4, BODY_DOF_RX = 8, BODY_DOF_RY = 16, BODY_DOF_RZ = 32 };
+
+/** A rigid body: a wall whose motion the flow drives (the pair forces of its ghosts on the fluid),
+ *  with gravity; 3 degrees of freedom in 2D (quantities per metre of depth), 6 in 3D. */
+struct body {
+  int active;
+  double mass;                  /* [kg] (2D: [kg/m]) */
+  double centre[3];             /* centre of mass at t = 0 [m] */
+  double inertia[3];            /* principal moments of inertia about the centre of mass, along the
+                                   case axes at t = 0 (2D: inertia[2] = I_zz) [kg m^2] (2D: [kg m]) */
+  double velocity[3];           /* initial velocity of the centre of mass [m/s] */
+  double angular_velocity[3];   /* initial angular velocity (2D: [2], about z) [rad/s] */
+  unsigned fixed;               /* BODY_DOF_* held at their initial velocity */
+};
+
 /** A wall: layers of fixed ghost particles along the boundary of a shape. */
 struct wall {
   struct shape shape;
   enum slip_kind slip;
   enum fluid_side fluid_side;   /* inside: a tank (ghosts outside the shape); outside: an obstacle */
-  int moving;                   /* the wall follows `motion` (else it is fixed) */
+  int moving;                   /* the wall follows `motion`, or is a body (else it is fixed) */
   struct wall_motion motion;
+  struct body body;             /* active: the wall moves as a rigid body (moving is then 1) */
 };
 
 /** A probe read at the output.probes_interval: a pressure sensor (a point, or in 2D a segment of
@@ -171,6 +189,13 @@ static inline int case_walls_move(const struct case_def *c) {
   for (int w = 0; w < c->n_walls; w++)
     if (c->walls[w].moving) return 1;
   return 0;
+}
+
+/** The number of walls of c that are rigid bodies. */
+static inline int case_n_bodies(const struct case_def *c) {
+  int n = 0;
+  for (int w = 0; w < c->n_walls; w++) n += c->walls[w].body.active;
+  return n;
 }
 
 #endif

@@ -35,6 +35,12 @@ enum polygon_fault {
  *  concerned in *a < *b. */
 enum polygon_fault polygon_fault(const struct shape *s, int *a, int *b);
 
+/** Centroid [m] and principal moments of inertia about it along the case axes, per unit mass
+ *  [m^2], of s filled uniformly (a box, a disc or annulus, a ball or shell, a 2D polygon: its
+ *  axes need not be principal, so inertia[0..1] are then the moments about x and y only); 2D:
+ *  inertia[2] about z. */
+void shape_mass_properties(const struct shape *s, int dim, double *centroid, double *inertia);
+
 /** Axis-aligned bounding box of s, grown by `margin` on every side. */
 void shape_bbox(const struct shape *s, int dim, double margin, double *lo, double *hi);
 

@@ -42,6 +42,9 @@ struct frame {
   double theta, omega, alpha;          /* [rad], [rad/s], [rad/s^2] */
   double centre[3];                    /* rotation centre at t = 0 [m] */
   double axis[3];                      /* unit rotation axis (3D; 2D turns about z) */
+  int free_spin;                       /* 3D rigid body: the rates are the vectors spin and
+                                          spin_rate, not omega and alpha about the axis */
+  double spin[3], spin_rate[3];        /* angular velocity [rad/s] and acceleration [rad/s^2] */
 };
 
 /** Evaluate the frame of motion m at time t [s]. A motion with no active law is the identity.
@@ -62,7 +65,8 @@ void frame_reference(const struct frame *f, int dim, const double *x, double *x_
 void frame_turn(const struct frame *f, int dim, const double *v, double *out);
 
 /** Velocity [m/s] and acceleration [m/s^2] of the body point now at x: v + w x r and
- *  a + alpha x r + w x (w x r), r = x - (c + d), w = omega axis, alpha = alpha axis. */
+ *  a + alpha x r + w x (w x r), r = x - (c + d), w = omega axis, alpha = alpha axis (with
+ *  free_spin: w = spin, alpha = spin_rate). */
 void frame_velocity(const struct frame *f, int dim, const double *x, double *u);
 void frame_acceleration(const struct frame *f, int dim, const double *x, double *a);
 

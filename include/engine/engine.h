@@ -5,6 +5,7 @@
 #include <mpi.h>
 #include <stdio.h>
 #include "case/case.h"
+#include "engine/bodies.h"
 #include "io/io_hdf5.h"
 #include "physics/pass_ctx.h"
 #include "parallel/nlist.h"
@@ -60,7 +61,8 @@ struct engine {
   int stage;                       /* current RK stage 0..3 */
   double time, dt;                 /* [s] */
   double stage_time;               /* time of the state the current stage evaluates (prm.frames) [s] */
-  int moving_walls;                /* the case has walls with a prescribed motion */
+  int moving_walls;                /* the case has moving walls (a prescribed motion, or bodies) */
+  struct bodies bodies;            /* the rigid bodies (engine/bodies.h) */
   long step;
   double step_start_time;          /* time and step at the start of the current step */
   long step_start;
@@ -88,7 +90,7 @@ struct engine {
   long *snap_counts;
   double next_output, next_stats, next_probes, next_checkpoint, wall_start, next_progress;
   long last_snapshot_step, last_stats_step, last_probes_step;   /* -1 before the first */
-  struct csv_table stats, probes;
+  struct csv_table stats, probes, bodies_csv;
   int lock_fd;                     /* rank 0: the output folder's lock (outdir_lock), else -1 */
   double *probe_buf;               /* the probes' samples of one row, sized at the first row */
   long probe_buf_len;

@@ -5,6 +5,7 @@
 #ifndef MPSPH_PASS_CTX_H
 #define MPSPH_PASS_CTX_H
 
+#include <stdint.h>
 #include "base/parts.h"
 #include "case/case.h"
 #include "parallel/nlist.h"
@@ -32,7 +33,24 @@ enum {
   FEAT_TRANSPORT_VELOCITY = 8192,  /* scheme riemann with a light phase: its transport-velocity shift */
   FEAT_DIFFUSION = 16384,  /* density diffusion (delta > 0); in delta-plus and delta-sph also the
                               renormalised density gradient it reads */
-  FEAT_VISCOSITY = 32768   /* artificial (alpha > 0) or laminar (a phase's viscosity > 0) viscosity */
+  FEAT_VISCOSITY = 32768,  /* artificial (alpha > 0) or laminar (a phase's viscosity > 0) viscosity */
+  FEAT_BODIES = 65536      /* rigid bodies: the fluid's pair forces on their ghosts (body loads) */
+};
+
+/** The force of one fluid particle's pair terms with the ghosts of one body: minus the particle's
+ *  mass times the part of its du/dt those pairs make (action and reaction). */
+struct body_load {
+  int64_t id;                      /* the fluid particle's id (the loads are summed in id order) */
+  int wall;                        /* the body's wall index */
+  double x[3];                     /* the fluid particle's position: every pair force is along the
+                                      pair's separation, so its torque is taken here [m] */
+  double force[3];                 /* on the body [N] (2D: [N/m]) */
+};
+
+/** The body loads of a stage, appended by the rhs pass in any order. */
+struct body_loads {
+  struct body_load *at;
+  long n, cap;
 };
 
 /** Work arrays of the scheme, sized to the particle capacity (those read at halo slots) or to
@@ -76,6 +94,7 @@ struct physics_params {
   double damper_coef[CASE_MAX_PHASES + 1];  /* alpha2 c0 h of phase k at [k + 1]; 0 for gases, walls [m^2/s] */
   double lattice_w_sum;            /* scheme riemann: sum of W over the undisturbed lattice, self
                                       included [1/m^dim] */
+  unsigned body_walls;             /* bit w: wall w is a rigid body (FEAT_BODIES) */
   /* set by the time stepper */
   struct frame frames[CASE_MAX_WALLS];   /* the moving walls' frames at the stage's time */
   double rho_min[CASE_MAX_PHASES]; /* global minimum density per phase (first stage) [kg/m^3] */
@@ -107,6 +126,8 @@ struct pass_ctx {
   void (*progress)(void *arg);     /* called between cells by pass_for_each_owned (NULL: none): lets
                                       the halo messages the pass overlaps progress */
   void *progress_arg;
+  struct body_loads *loads;        /* FEAT_BODIES: the rhs pass appends a load per fluid particle
+                                      and body whose ghosts are among its neighbours */
   struct pass_out out;
 };
 

@@ -52,7 +52,12 @@ static const char *const CIRCLE_KEYS[] = {"centre", "radius", "inner_radius", NU
 static const char *const FLUID_KEYS[] = {"phase", "box", "circle", "polygon", "velocity",
                                          "velocity_gradient", "velocity_mode", NULL};
 static const char *const MODE_KEYS[] = {"amplitude", "wavelength", "interface", NULL};
-static const char *const WALL_KEYS[] = {"box", "circle", "polygon", "slip", "fluid_side", "motion", NULL};
+static const char *const WALL_KEYS[] = {"box", "circle", "polygon", "slip", "fluid_side", "motion", "body", NULL};
+static const char *const BODY_KEYS[] = {"mass", "centre", "inertia", "velocity", "angular_velocity", "fixed", NULL};
+/* The degrees of freedom a body's `fixed` may name, in the order of the BODY_DOF_* bits, per
+ * dimension. */
+static const char *const DOF_NAMES_2D[] = {"x", "y", "", "", "", "rotation", NULL};
+static const char *const DOF_NAMES_3D[] = {"x", "y", "z", "rx", "ry", "rz", NULL};
 static const char *const MOTION_KEYS[] = {"translation", "rotation", "table", "centre", "axis", NULL};
 static const char *const TRANSLATION_KEYS[] = {"amplitude", "period", "phase", "ramp", NULL};
 static const char *const ROTATION_KEYS[] = {"amplitude", "period", "phase", "ramp", "centre", "axis", NULL};
@@ -725,11 +730,66 @@ static int read_motion(const struct map *wall, struct wall *w) {
          read_axis(&rotation, &w->motion) || check_motion_start(&m, &w->motion);
 }
 
+/* The degrees of freedom a body holds: a list of names from the dimension's DOF names. */
+static int read_fixed(const struct map *m, unsigned *fixed) {
+  char path[PATH_LEN], ipath[PATH_LEN], names[LIST_LEN] = "", expected[LIST_LEN + 32];
+  const char *const *dof = m->ld->dim == 2 ? DOF_NAMES_2D : DOF_NAMES_3D;
+  const struct ynode *seq;
+  for (int k = 0; dof[k]; k++)
+    if (dof[k][0]) snprintf(names + strlen(names), sizeof names - strlen(names), "%s%s", names[0] ? ", " : "", dof[k]);
+  snprintf(expected, sizeof expected, "a degree of freedom: %s", names);
+  *fixed = 0;
+  if (list(m, "fixed", 0, 6, "degrees of freedom", &seq, path)) return 1;
+  for (int i = 0; seq && i < seq->n; i++) {
+    const struct ynode *v = seq->entries[i].value;
+    int k = 0;
+    while (dof[k] && !(v->kind == YNODE_SCALAR && dof[k][0] && strcmp(v->text, dof[k]) == 0)) k++;
+    join_index(ipath, path, i);
+    if (!dof[k]) return fail_got(m->ld, v, ipath, expected);
+    *fixed |= 1u << k;
+  }
+  return 0;
+}
+
+/* A rotation rate or moment under key: a number (about z) in 2D, a vector in 3D, into out[2] or
+ * out[0..2]. */
+static int per_rotation(const struct map *m, const char *key, const struct rule *r, double *out) {
+  if (m->ld->dim == 3) return vec(m, key, 0, out);
+  return num(m, key, r, out[2], &out[2]);
+}
+
+/* The rigid body of wall w (absent: the wall is not a body): mass, and centre of mass and inertia
+ * by default those of the wall's shape filled uniformly. */
+static int read_body(const struct map *wall, struct wall *w) {
+  struct map m;
+  struct body *b = &w->body;
+  char path[PATH_LEN];
+  if (sub(wall, "body", BODY_KEYS, &m)) return 1;
+  b->active = m.node != NULL;
+  if (!b->active) return 0;
+  if (w->moving)
+    return fail(m.ld, get(wall, "motion", path), path, "got a motion and a body, expected one of them: a "
+                "body moves as the flow drives it");
+  double per_mass[3];
+  shape_mass_properties(&w->shape, m.ld->dim, b->centre, per_mass);
+  if (num(&m, "mass", &R_POSITIVE, REQUIRED, &b->mass)) return 1;
+  for (int d = 0; d < 3; d++) b->inertia[d] = b->mass * per_mass[d];
+  if (vec(&m, "centre", 0, b->centre) || per_rotation(&m, "inertia", &R_POSITIVE, b->inertia) ||
+      vec(&m, "velocity", 0, b->velocity) || per_rotation(&m, "angular_velocity", &R_ANY, b->angular_velocity) ||
+      read_fixed(&m, &b->fixed))
+    return 1;
+  for (int d = 0; d < 3; d++)
+    if (!(b->inertia[d] > 0) && (m.ld->dim == 3 || d == 2))
+      return fail(m.ld, m.node, m.path, "got a moment of inertia of %g, expected > 0 (set body.inertia)", b->inertia[d]);
+  w->moving = 1;
+  return 0;
+}
+
 static int read_wall(const struct map *m, struct case_def *c, int i) {
   struct wall *w = &c->walls[i];
   int slip, side;
   if (shape(m, &w->shape) || choice(m, "slip", SLIP_NAMES, SLIP_FREE, &slip) ||
-      choice(m, "fluid_side", SIDE_NAMES, FLUID_INSIDE, &side) || read_motion(m, w))
+      choice(m, "fluid_side", SIDE_NAMES, FLUID_INSIDE, &side) || read_motion(m, w) || read_body(m, w))
     return 1;
   w->slip = (enum slip_kind)slip;
   w->fluid_side = (enum fluid_side)side;
@@ -979,6 +1039,26 @@ static void put_motion(FILE *f, const struct wall_motion *m, int dim) {
 }
 
 
+/* A rotation rate or moment: a number (about z) in 2D, a vector in 3D. */
+static void put_per_rotation(FILE *f, const char *key, const double *v, int dim) {
+  if (dim == 3) put_vec(f, "      ", key, v, 3);
+  else put_num(f, "      ", key, v[2]);
+}
+
+static void put_body(FILE *f, const struct body *b, int dim) {
+  const char *const *dof = dim == 2 ? DOF_NAMES_2D : DOF_NAMES_3D;
+  fputs("    body:\n", f);
+  put_num(f, "      ", "mass", b->mass);
+  put_vec(f, "      ", "centre", b->centre, dim);
+  put_per_rotation(f, "inertia", b->inertia, dim);
+  put_vec(f, "      ", "velocity", b->velocity, dim);
+  put_per_rotation(f, "angular_velocity", b->angular_velocity, dim);
+  fputs("      fixed: [", f);
+  for (int k = 0, n = 0; dof[k]; k++)
+    if (b->fixed & (1u << k)) fprintf(f, "%s%s", n++ ? ", " : "", dof[k]);
+  fputs("]\n", f);
+}
+
 /* Fluid region i (the list's own writer). */
 static void put_fluid(FILE *f, const struct case_def *c, int i) {
   const struct fluid_region *r = &c->fluids[i];
@@ -1000,7 +1080,8 @@ static void put_wall(FILE *f, const struct case_def *c, int i) {
   put_shape(f, "  - ", "      ", &w->shape, c->dimension);
   put_word(f, "    ", "slip", SLIP_NAMES[w->slip]);
   put_word(f, "    ", "fluid_side", SIDE_NAMES[w->fluid_side]);
-  if (w->moving) put_motion(f, &w->motion, c->dimension);
+  if (w->body.active) put_body(f, &w->body, c->dimension);
+  else if (w->moving) put_motion(f, &w->motion, c->dimension);
 }
 
 /* Probe i (the list's own writer): its name, kind and the keys of its kind. */

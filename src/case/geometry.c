@@ -205,6 +205,50 @@ void shape_bbox(const struct shape *s, int dim, double margin, double *lo, doubl
   }
 }
 
+/* Area [m^2], centroid [m] and second moments about the centroid per unit area [m^2] (about x:
+ * mean y^2, about y: mean x^2) of a polygon, from its triangles with the first vertex. */
+static void polygon_moments(const struct shape *s, double *centroid, double *mean_x2, double *mean_y2) {
+  double area = 0, cx = 0, cy = 0, sxx = 0, syy = 0;
+  const double (*v)[2] = s->vertex;
+  for (int k = 0; k < s->n_vertices; k++) {   /* shoelace sums over the edges */
+    const double *a = v[k], *b = v[(k + 1) % s->n_vertices];
+    double cross = a[0] * b[1] - b[0] * a[1];
+    area += cross / 2;
+    cx += (a[0] + b[0]) * cross / 6;
+    cy += (a[1] + b[1]) * cross / 6;
+    sxx += (a[0] * a[0] + a[0] * b[0] + b[0] * b[0]) * cross / 12;
+    syy += (a[1] * a[1] + a[1] * b[1] + b[1] * b[1]) * cross / 12;
+  }
+  centroid[0] = cx / area;
+  centroid[1] = cy / area;
+  *mean_x2 = sxx / area - centroid[0] * centroid[0];
+  *mean_y2 = syy / area - centroid[1] * centroid[1];
+}
+
+void shape_mass_properties(const struct shape *s, int dim, double *centroid, double *inertia) {
+  double sq[3] = {0, 0, 0};   /* mean squared offset from the centroid along each axis [m^2] */
+  for (int d = 0; d < 3; d++) centroid[d] = 0;
+  if (s->kind == SHAPE_BOX)
+    for (int d = 0; d < dim; d++) {
+      centroid[d] = 0.5 * (s->min[d] + s->max[d]);
+      sq[d] = (s->max[d] - s->min[d]) * (s->max[d] - s->min[d]) / 12;
+    }
+  else if (s->kind == SHAPE_CIRCLE) {
+    double r = s->radius, ri = s->inner_radius;
+    /* disc or annulus: (r^2 + ri^2)/4 per axis; ball or shell: (r^5 - ri^5)/(5 (r^3 - ri^3)) */
+    double per_axis = dim == 2 ? (r * r + ri * ri) / 4
+                               : (pow(r, 5) - pow(ri, 5)) / (5 * (pow(r, 3) - pow(ri, 3)));
+    for (int d = 0; d < dim; d++) {
+      centroid[d] = s->centre[d];
+      sq[d] = per_axis;
+    }
+  } else
+    polygon_moments(s, centroid, &sq[0], &sq[1]);
+  inertia[0] = sq[1] + sq[2];
+  inertia[1] = sq[0] + sq[2];
+  inertia[2] = sq[0] + sq[1];
+}
+
 void shape_anchor(const struct shape *s, int dim, double *anchor) {
   double hi[3];
   shape_bbox(s, dim, 0.0, anchor, hi);

@@ -184,17 +184,36 @@ void frame_turn(const struct frame *f, int dim, const double *v, double *out) {
   if (dim == 3) out[2] = v[2];
 }
 
-/* out = k x r for the frame's axis k. */
-static void axis_cross(const struct frame *f, const double *r, double *out) {
-  const double *k = f->axis;
+/* out = k x r. */
+static void cross(const double *k, const double *r, double *out) {
   out[0] = k[1] * r[2] - k[2] * r[1];
   out[1] = k[2] * r[0] - k[0] * r[2];
   out[2] = k[0] * r[1] - k[1] * r[0];
 }
 
+/* out = k x r for the frame's axis k. */
+static void axis_cross(const struct frame *f, const double *r, double *out) { cross(f->axis, r, out); }
+
+/* A free-spinning frame's velocity v + w x r and acceleration a + alpha x r + w x (w x r) at the
+ * arm r (either output may be NULL). */
+static void spin_kinematics(const struct frame *f, const double *r, double *u, double *a) {
+  double wr[3], wwr[3], ar[3];
+  cross(f->spin, r, wr);
+  cross(f->spin, wr, wwr);
+  cross(f->spin_rate, r, ar);
+  for (int d = 0; d < 3; d++) {
+    if (u) u[d] = f->v[d] + wr[d];
+    if (a) a[d] = f->a[d] + ar[d] + wwr[d];
+  }
+}
+
 void frame_velocity(const struct frame *f, int dim, const double *x, double *u) {
   double r[3];
   arm(f, dim, x, r);
+  if (f->free_spin) {
+    spin_kinematics(f, r, u, NULL);
+    return;
+  }
   if (!about_z(f, dim)) {   /* v + omega k x r */
     double kr[3];
     axis_cross(f, r, kr);
@@ -209,6 +228,10 @@ void frame_velocity(const struct frame *f, int dim, const double *x, double *u) 
 void frame_acceleration(const struct frame *f, int dim, const double *x, double *a) {
   double r[3], w2 = f->omega * f->omega;
   arm(f, dim, x, r);
+  if (f->free_spin) {
+    spin_kinematics(f, r, NULL, a);
+    return;
+  }
   if (!about_z(f, dim)) {   /* a + alpha k x r + omega^2 (k (k . r) - r) */
     double kr[3], along = f->axis[0] * r[0] + f->axis[1] * r[1] + f->axis[2] * r[2];
     axis_cross(f, r, kr);

@@ -276,6 +276,7 @@ int engine_init(struct engine *e, const struct case_def *c, const char *outdir,
   e->last_snapshot_step = e->last_stats_step = e->last_probes_step = -1;
   e->next_checkpoint = c->checkpoint_interval;
   if (setup_space(e)) return 1;
+  bodies_init(e);
   int status = restart ? engine_checkpoint_read(e, restart) : engine_generate(e);
   if (status) return status;
   engine_assemble(e);
@@ -405,4 +406,5 @@ void engine_free(struct engine *e) {
   free(e->snap_times);
   free(e->snap_counts);
   free(e->probe_buf);
+  bodies_free(&e->bodies);
 }

@@ -164,6 +164,7 @@ unsigned engine_option_terms(const struct engine *e) {
   if (c->interface_sharpness > 0 && c->n_phases > 1) f |= FEAT_SHARPNESS;
   if (c->potential_omega > 0) f |= FEAT_CENTRAL;
   if (c->surface_tension > 0 && c->n_phases > 1) f |= FEAT_SURFACE_TENSION;
+  if (case_n_bodies(c)) f |= FEAT_BODIES;
   return f;
 }
 
@@ -317,7 +318,8 @@ void engine_evaluate(struct engine *e, int skip_state_halo) {
 }
 
 struct pass_ctx engine_pass_ctx(struct engine *e) {
-  return (struct pass_ctx){.c = e->c, .prm = &e->prm, .p = &e->p, .w = &e->w, .nl = &e->nl, .space = &e->space};
+  return (struct pass_ctx){.c = e->c, .prm = &e->prm, .p = &e->p, .w = &e->w, .nl = &e->nl, .space = &e->space,
+                           .loads = &e->bodies.loads};
 }
 
 long engine_wall_guard(struct engine *e) {
@@ -453,10 +455,12 @@ static void save_state(struct engine *e) {
   }
 }
 
-/* The frames of the moving walls at time t [s]. */
+/* The frames of the moving walls at time t [s]: a prescribed motion's at t, a body's at its
+ * current state. */
 static void wall_frames(const struct engine *e, double t, struct frame *f) {
   for (int w = 0; w < e->c->n_walls; w++)
-    if (e->c->walls[w].moving) motion_frame(&e->c->walls[w].motion, t, &f[w]);
+    if (e->c->walls[w].moving && !e->c->walls[w].body.active) motion_frame(&e->c->walls[w].motion, t, &f[w]);
+  bodies_frames(e, f);
 }
 
 /* Carry the owned ghosts of moving walls rigidly from their place at the start of the step
@@ -519,6 +523,7 @@ static void rk_update(struct engine *e, const struct rk_scheme *rk, int s, const
     p->p[i] = eos_pressure(&e->c->phases[p->phase[i]], p->rho[i]);
     if (threshold) density_threshold(p, i, &e->c->phases[p->phase[i]]);
   }
+  bodies_rk_update(e, s, ws, step, last);
   if (e->moving_walls) move_ghosts(e, start, e->step_start_time + (!last ? rk->next[s] : 1.0) * e->dt);
 }
 
@@ -529,6 +534,7 @@ int engine_step_rk(struct engine *e) {
   struct frame start[CASE_MAX_WALLS];
   engine_work_reserve(e);
   save_state(e);
+  bodies_save(e);
   e->step_start_time = e->time;
   e->step_start = e->step;
   wall_frames(e, e->time, start);
@@ -538,6 +544,7 @@ int engine_step_rk(struct engine *e) {
     wall_frames(e, e->stage_time, e->prm.frames);
     engine_evaluate(e, s == 0);
     if (engine_check_derivatives(e)) return 2;
+    if (e->bodies.n) bodies_evaluate(e);
     if (s == 0) {
       const char *limit;
       e->dt = time_step(e, &limit);
@@ -546,6 +553,8 @@ int engine_step_rk(struct engine *e) {
     }
     rk_update(e, rk, s, start);
   }
+  bodies_frames(e, e->prm.frames);   /* the bodies where the step ends (a prescribed motion's last
+                                        stage frame is already its frame there) */
   e->stage = -1;   /* between steps */
   e->time += e->dt;
   e->step++;

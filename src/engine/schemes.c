@@ -59,6 +59,16 @@ static int coupled_viscosity_refused(const struct case_def *c, const char *schem
                   "(its viscosity, %s, always couples the phases: harmonic)", c->source_file, scheme, why), 1;
 }
 
+/* Rigid bodies take their force from the rhs pass of schemes delta-plus and delta-sph (the body
+ * loads): the other schemes refuse them. Returns 0 or 1. */
+static int bodies_refused(const struct case_def *c, const char *scheme, char *err, size_t len) {
+  for (int w = 0; w < c->n_walls; w++)
+    if (c->walls[w].body.active)
+      return snprintf(err, len, "%s: walls.%d.body: rigid bodies are not available with scheme %s in this "
+                      "version (schemes delta-plus and delta-sph have them)", c->source_file, w, scheme), 1;
+  return 0;
+}
+
 /* The options of paper 000 that schemes same-phase-continuity and generalized-dissipation do not
  * have (keys under physics), with the value that leaves each off. */
 static const char *const DELTA_PLUS_ONLY[][2] = {{"shifting", "none"}, {"tensile_control", "false"},
@@ -79,7 +89,8 @@ static int delta_plus_option(const struct case_def *c) {
  * the phases (interface_viscosity harmonic, its default): refuse none. */
 static int same_phase_terms(const struct case_def *c, char *err, size_t len) {
   int k = delta_plus_option(c);
-  if (coupled_viscosity_refused(c, "same-phase-continuity", "paper 003 Eq. 21 with the harmonic mean", err, len))
+  if (coupled_viscosity_refused(c, "same-phase-continuity", "paper 003 Eq. 21 with the harmonic mean", err, len) ||
+      bodies_refused(c, "same-phase-continuity", err, len))
     return 1;
   if (k < 0) return 0;
   snprintf(err, len, "%s: physics.%s: only %s with scheme same-phase-continuity (paper 003 has no such term)",
@@ -92,7 +103,9 @@ static int same_phase_terms(const struct case_def *c, char *err, size_t len) {
  * viscosity always couples the phases (interface_viscosity harmonic, its default): refuse none. */
 static int gd_unsupported(const struct case_def *c, char *err, size_t len) {
   int k = delta_plus_option(c);
-  if (coupled_viscosity_refused(c, "generalized-dissipation", "paper 004 Eq. 10", err, len)) return 1;
+  if (coupled_viscosity_refused(c, "generalized-dissipation", "paper 004 Eq. 10", err, len) ||
+      bodies_refused(c, "generalized-dissipation", err, len))
+    return 1;
   if (k < 0) return 0;
   snprintf(err, len, "%s: physics.%s: not part of scheme generalized-dissipation (use none, false, 0 or sum)",
            c->source_file, DELTA_PLUS_ONLY[k][0]);
@@ -102,6 +115,7 @@ static int gd_unsupported(const struct case_def *c, char *err, size_t len) {
 /* Scheme riemann: fixed walls only (its dual stepper does not move walls); its viscous pair term
  * takes the harmonic mean of the two particles' viscosities, across phases too: refuse none. */
 static int riemann_supported(const struct case_def *c, char *err, size_t len) {
+  if (bodies_refused(c, "riemann", err, len)) return 1;
   for (int w = 0; w < c->n_walls; w++)
     if (c->walls[w].moving)
       return snprintf(err, len, "%s: walls: scheme riemann supports fixed walls only in this version", c->source_file), 1;

@@ -11,7 +11,7 @@
 #include "base/mem.h"
 #include "io/outdir.h"
 
-#define MAX_NUMBERS 12
+#define MAX_NUMBERS (12 + CASE_MAX_WALLS * BODY_NUMBERS)
 
 /* The /run numbers: engine fields and the extras, as named pointers (for writing and reading). */
 static int run_numbers(struct engine *e, struct run_extras *x, struct hdf5_number *v) {
@@ -28,7 +28,7 @@ static int run_numbers(struct engine *e, struct run_extras *x, struct hdf5_numbe
   v[n++] = (struct hdf5_number){"no_free_surface", NULL, &x->no_free_surface};
   v[n++] = (struct hdf5_number){"finished", NULL, &x->finished};
   v[n++] = (struct hdf5_number){"wall_guard_hits", NULL, &x->wall_guard_hits};
-  return n;
+  return n + bodies_numbers(e, v + n);
 }
 
 int engine_checkpoint_write(struct engine *e) {

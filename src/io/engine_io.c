@@ -88,25 +88,32 @@ static void stats_header(const struct engine *e) {
   fprintf(f, ",wall_seconds,wall_guard_hits\n");
 }
 
-/* Rank 0: open stats.csv and probes.csv (if the case has probes), headers on new files.
- * Returns 0, 1 when a file cannot be opened, or 3 when a header cannot be written, with a
- * message. */
+/* Rank 0: open stats.csv, probes.csv (if the case has probes) and bodies.csv (if it has bodies),
+ * headers on new files. Returns 0, 1 when a file cannot be opened, or 3 when a header cannot be
+ * written, with a message. */
 static int open_tables(struct engine *e) {
-  int fresh_stats, fresh_probes = 0;
+  int fresh_stats, fresh_probes = 0, fresh_bodies = 0;
   if (open_csv(e, &e->stats, &fresh_stats) ||
-      (e->c->n_probes && open_csv(e, &e->probes, &fresh_probes))) {
-    fprintf(stderr, "mpsph: cannot open stats.csv or probes.csv in '%s': %s\n", e->outdir, strerror(errno));
+      (e->c->n_probes && open_csv(e, &e->probes, &fresh_probes)) ||
+      (e->bodies.n && open_csv(e, &e->bodies_csv, &fresh_bodies))) {
+    fprintf(stderr, "mpsph: cannot open stats.csv, probes.csv or bodies.csv in '%s': %s\n", e->outdir,
+            strerror(errno));
     return 1;
   }
   if (fresh_stats) stats_header(e);
   if (fresh_probes) probes_write_header(e->probes.f, e->c);
-  return end_row(e, &e->stats) || (e->probes.f && end_row(e, &e->probes)) ? 3 : 0;
+  if (fresh_bodies) bodies_csv_header(e, e->bodies_csv.f);
+  return end_row(e, &e->stats) || (e->probes.f && end_row(e, &e->probes)) ||
+                 (e->bodies_csv.f && end_row(e, &e->bodies_csv))
+             ? 3
+             : 0;
 }
 
 int engine_open_output(struct engine *e) {
   e->case_yaml = case_to_yaml(e->c);
   e->stats.name = "stats.csv";
   e->probes.name = "probes.csv";
+  e->bodies_csv.name = "bodies.csv";
   int status = 0;
   if (e->rank == 0) {
     if (outdir_create(e->outdir) || outdir_write_file(e->outdir, "config.yaml", put_text, e->case_yaml)) {
@@ -136,6 +143,7 @@ static int close_table(const struct engine *e, struct csv_table *t) {
 int engine_close_output(struct engine *e) {
   int status = close_table(e, &e->stats);
   if (close_table(e, &e->probes)) status = 3;
+  if (close_table(e, &e->bodies_csv)) status = 3;
   return rank0_status(e, status);
 }
 
@@ -148,7 +156,7 @@ static int sync_table(const struct engine *e, struct csv_table *t) {
 
 int engine_checkpoint(struct engine *e) {
   int status = 0;
-  if (e->rank == 0) status = sync_table(e, &e->stats) | sync_table(e, &e->probes);
+  if (e->rank == 0) status = sync_table(e, &e->stats) | sync_table(e, &e->probes) | sync_table(e, &e->bodies_csv);
   return rank0_status(e, status) ? 3 : engine_checkpoint_write(e);
 }
 
@@ -274,6 +282,10 @@ int engine_output(struct engine *e, int force) {
     e->last_stats_step = e->step;
     write_stats(e);
     if (e->rank == 0) status |= end_row(e, &e->stats);
+    if (e->rank == 0 && e->bodies_csv.f) {
+      bodies_csv_row(e, e->bodies_csv.f);
+      status |= end_row(e, &e->bodies_csv);
+    }
     rows = 1;
   }
   if (probes) {

@@ -13,8 +13,10 @@
  * psi_ij = 2(rho_j - rho_i) - (<grad rho>_i + <grad rho>_j).r_ji, pi_ij = u_ji.r_ji/(r^2 + 0.01 h^2),
  * K_i = alpha h c0 rho0 + 2(dim+2) mu, mu_ij = 2 mu_i mu_j/(mu_i + mu_j), s_i = -1 (tensile control: p_i < 0 outside the free-surface
  * region) else +1, D = <div u>. eps/phi: interface.c.
- * The terms a case does not use are compiled out of its loop (see dispatch()). */
+ * The terms a case does not use are compiled out of its loop (see dispatch()). With rigid bodies,
+ * the same sums over the ghosts of each body alone give the body loads (the force on the body). */
 #include <math.h>
+#include "base/mem.h"
 #include "physics/interface.h"
 #include "physics/passes.h"
 
@@ -37,20 +39,26 @@ static inline double other_phase_pressure(double pi, double rhoi, double pj, dou
   return ((rhoj - rhoi) * pi + 2.0 * rhoi * pj) / (rhoi + rhoj);
 }
 
-/* Loop over the neighbours of i; terms DU (delta-u), DAMP (acoustic damper: 1 symmetric,
- * 2 difference form), PHASES (0: one fluid phase, so no pair is of the other-phase relation;
- * 1: several phases; 2: several phases with the sharpness force) and the dimension are
- * compile-time constants in each specialisation; so is DISS (bit 1: viscosity, bit 2: density
- * diffusion; a term that is off has its pair terms compiled out). The sums are accumulated in
- * locals and the arrays read through restrict pointers, so that nothing goes through memory
- * inside the loop. */
+/* The terms of a case's loop: du (delta-u), damp (acoustic damper: 1 symmetric, 2 difference
+ * form), phases (0: one fluid phase, so no pair is of the other-phase relation; 1: several
+ * phases; 2: several phases with the sharpness force), diss (bit 1: viscosity, bit 2: density
+ * diffusion). */
+struct terms {
+  int du, damp, phases, diss;
+};
+
+/* Loop over the neighbours of i (with BODY_WALL >= 0 over the ghosts of that wall only); the
+ * terms DU, DAMP, PHASES, DISS (struct terms) and the dimension are compile-time constants in
+ * each specialisation, so that a term that is off has its pair terms compiled out. The sums are
+ * accumulated in locals and the arrays read through restrict pointers, so that nothing goes
+ * through memory inside the loop. */
 static inline __attribute__((always_inline)) void fluid_sums(const struct pass_ctx *ctx,
                                                              const struct centre *ci,
                                                              const struct neighbours *nb,
                                                              struct fluid_sums *out, long *pairs,
                                                              const int dim, const int DU,
                                                              const int DAMP, const int PHASES,
-                                                             const int DISS) {
+                                                             const int DISS, const int BODY_WALL) {
   const struct parts *p = ctx->p;
   const struct work *w = ctx->w;
   const double *restrict x[3] = {p->x[0], p->x[1], p->x[2]}, *restrict v[3] = {p->v[0], p->v[1], p->v[2]};
@@ -78,6 +86,7 @@ static inline __attribute__((always_inline)) void fluid_sums(const struct pass_c
   long n_pairs = 0;
   struct neighbours it = *nb;
   for (long j; neighbours_next(&it, &j);) {
+    if (BODY_WALL >= 0 && !(part_has(phase[j], KIND_BOUNDARY) && p->wall[j] == BODY_WALL)) continue;
     double dx[3], dv[3], r2 = 0, dvdx = 0;
     for (int d = 0; d < dim; d++) {
       dx[d] = xi[d] - x[d][j];
@@ -139,7 +148,7 @@ static inline __attribute__((always_inline)) void fluid_sums(const struct pass_c
   *pairs += n_pairs;
 }
 
-#define FLUID_SUMS(D, U, A, P, S) fluid_sums(ctx, ci, nb, s, pairs, D, U, A, P, S)
+#define FLUID_SUMS(D, U, A, P, S) fluid_sums(ctx, ci, nb, s, pairs, D, U, A, P, S, -1)
 #define DAMPED(D, U, P, S) \
   (damp == 0 ? FLUID_SUMS(D, U, 0, P, S) : damp == 1 ? FLUID_SUMS(D, U, 1, P, S) : FLUID_SUMS(D, U, 2, P, S))
 #ifdef MPSPH_SINGLE_PHASE   /* benchmark build: the multiphase specialisations compiled out */
@@ -164,19 +173,38 @@ DISPATCH_DISS(1)
 DISPATCH_DISS(2)
 DISPATCH_DISS(3)
 
-/* Call the specialisation of fluid_sums for the case's terms. */
+/* The terms of the loop of particle i (its phase decides whether the damper acts). */
+static struct terms terms_of(const struct pass_ctx *ctx, const struct centre *ci) {
+  unsigned f = ctx->prm->features;
+  struct terms t;
+  t.du = (f & FEAT_DELTA_U) != 0;
+  t.phases = ctx->c->n_phases == 1 ? 0 : (f & FEAT_SHARPNESS) ? 2 : 1;
+  t.damp = !(f & FEAT_DAMPER) ? 0 : ctx->c->damper_form == DAMPER_SYMMETRIC ? 1 : 2;
+  if (!ctx->c->phases[ci->phase].incompressible) t.damp = 0;
+  t.diss = ((f & FEAT_VISCOSITY) ? 1 : 0) | ((f & FEAT_DIFFUSION) ? 2 : 0);
+  return t;
+}
+
+/* Call the specialisation of fluid_sums for the terms t. */
 static void dispatch(const struct pass_ctx *ctx, const struct centre *ci, const struct neighbours *nb,
-                     struct fluid_sums *s, long *pairs) {
+                     const struct terms *t, struct fluid_sums *s, long *pairs) {
   static void (*const by_diss[4])(const struct pass_ctx *, const struct centre *, const struct neighbours *,
                                   struct fluid_sums *, long *, int, int, int) = {dispatch_0, dispatch_1,
                                                                                  dispatch_2, dispatch_3};
-  unsigned f = ctx->prm->features;
-  int du = (f & FEAT_DELTA_U) != 0;
-  int phases = ctx->c->n_phases == 1 ? 0 : (f & FEAT_SHARPNESS) ? 2 : 1;
-  int damp = !(f & FEAT_DAMPER) ? 0 : ctx->c->damper_form == DAMPER_SYMMETRIC ? 1 : 2;
-  if (!ctx->c->phases[ci->phase].incompressible) damp = 0;
-  int diss = ((f & FEAT_VISCOSITY) ? 1 : 0) | ((f & FEAT_DIFFUSION) ? 2 : 0);
-  by_diss[diss](ctx, ci, nb, s, pairs, du, damp, phases);
+  by_diss[t->diss](ctx, ci, nb, s, pairs, t->du, t->damp, t->phases);
+}
+
+/* du/dt of particle i from its momentum sums s, the body forces aside [m/s^2]. */
+static void pair_acceleration(const struct pass_ctx *ctx, const struct centre *ci, const struct fluid_sums *s,
+                              double *acc) {
+  const struct phase *f = &ctx->c->phases[ci->phase];
+  const int dim = ctx->p->dim;
+  double k_visc = ctx->c->alpha * ctx->prm->h * f->c0 * f->rho0 + 2.0 * (dim + 2) * f->viscosity;
+  double k_visc_other = 2.0 * (dim + 2);   /* times mu_ij, inside visc_other */
+  double k_damp = ctx->prm->damper_coef[1 + ci->phase], rho_i = ctx->p->rho[ci->i];
+  for (int d = 0; d < dim; d++)
+    acc[d] = (-s->grad_p[d] + k_visc * s->visc[d] + k_visc_other * s->visc_other[d] + s->mom_du[d] +
+              ctx->c->interface_sharpness * s->sharp[d]) / rho_i + k_damp * s->damper[d];
 }
 
 /* Combine the sums into drho/dt and du/dt of particle i. */
@@ -184,18 +212,48 @@ static void finish(struct pass_ctx *ctx, const struct centre *ci, const struct f
   const struct parts *p = ctx->p;
   const struct phase *f = &ctx->c->phases[ci->phase];
   const long i = ci->i;
-  double k_visc = ctx->c->alpha * ctx->prm->h * f->c0 * f->rho0 + 2.0 * (p->dim + 2) * f->viscosity;
-  double k_visc_other = 2.0 * (p->dim + 2);   /* times mu_ij, inside visc_other */
-  double k_damp = ctx->prm->damper_coef[1 + ci->phase], g[3];
+  double g[3], acc[3];
   body_acceleration(ctx, i, g);
   /* delta-sph integrates m/V: its diffusion is -(V/rho^S) times the volume diffusion (paper 001
    * Eq. 21 with the factor 2 restored), i.e. the density diffusion scaled by rho_i / rho^S_i */
   double diffusion = ctx->c->delta * ctx->prm->h * f->c0 * s->diff;
   if (ctx->prm->features & FEAT_SHEPARD) diffusion *= p->rho[i] / ctx->w->rho_s[i];
   ctx->w->drho[i] = -p->rho[i] * ctx->w->div[i] + diffusion + s->drho_du;
-  for (int d = 0; d < p->dim; d++)
-    ctx->w->dv[d][i] = (-s->grad_p[d] + k_visc * s->visc[d] + k_visc_other * s->visc_other[d] + s->mom_du[d] +
-                     ctx->c->interface_sharpness * s->sharp[d]) / p->rho[i] + k_damp * s->damper[d] + g[d];
+  pair_acceleration(ctx, ci, s, acc);
+  for (int d = 0; d < p->dim; d++) ctx->w->dv[d][i] = acc[d] + g[d];
+}
+
+/* Append to the loads the force on the ghosts of body wall w from fluid particle i. */
+static void append_load(struct pass_ctx *ctx, long i, int w, const double *acc) {
+  struct body_loads *l = ctx->loads;
+  const struct parts *p = ctx->p;
+  if (l->n == l->cap) {
+    l->cap = l->cap ? 2 * l->cap : 256;
+    l->at = mem_realloc(l->at, mem_bytes((size_t)l->cap, sizeof *l->at, "body loads"), "body loads");
+  }
+  struct body_load *b = &l->at[l->n++];
+  *b = (struct body_load){.id = p->id[i], .wall = w};
+  for (int d = 0; d < p->dim; d++) {
+    b->x[d] = p->x[d][i];
+    b->force[d] = -p->m[i] * acc[d];
+  }
+}
+
+/* The body loads of fluid particle i: for each body, its sums over that body's ghosts alone (the
+ * same pair terms as its du/dt), times -m_i; none for a body without ghosts among its
+ * neighbours. One generic (not specialised) loop: it runs only in scenes with bodies. */
+static __attribute__((noinline)) void add_body_loads(struct pass_ctx *ctx, const struct centre *ci,
+                                                     const struct neighbours *nb, const struct terms *t) {
+  for (int w = 0; w < ctx->c->n_walls; w++) {
+    if (!(ctx->prm->body_walls >> w & 1)) continue;
+    struct fluid_sums s;
+    long n_pairs = 0;
+    double acc[3];
+    fluid_sums(ctx, ci, nb, &s, &n_pairs, ctx->p->dim, t->du, t->damp, t->phases, t->diss, w);
+    if (n_pairs == 0) continue;
+    pair_acceleration(ctx, ci, &s, acc);
+    append_load(ctx, ci->i, w, acc);
+  }
 }
 
 /* Phase and tensile-control sign of particle i. */
@@ -211,8 +269,10 @@ static void fluid_rhs(struct pass_ctx *ctx, long i, const struct neighbours *nb)
   struct centre ci;
   struct fluid_sums sum;
   centre_of(ctx, i, &ci);
-  dispatch(ctx, &ci, nb, &sum, &ctx->out.pairs);
+  struct terms t = terms_of(ctx, &ci);
+  dispatch(ctx, &ci, nb, &t, &sum, &ctx->out.pairs);
   finish(ctx, &ci, &sum);
+  if (ctx->prm->features & FEAT_BODIES) add_body_loads(ctx, &ci, nb, &t);
 }
 
 void pass_fluid_rhs(struct pass_ctx *ctx) { pass_for_each_owned(ctx, fluid_rhs, NULL); }

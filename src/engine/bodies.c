@@ -1,0 +1,165 @@
+/* bodies.c — the rigid bodies of a run (engine/bodies.h): loads summed in a fixed order, the
+ * Runge-Kutta update of their state, their frames, bodies.csv and checkpoint numbers. */
+#include <stdlib.h>
+#include <string.h>
+#include "engine/bodies.h"
+#include "engine/engine.h"
+#include "base/mem.h"
+
+void bodies_init(struct engine *e) {
+  struct bodies *B = &e->bodies;
+  memset(B, 0, sizeof *B);
+  e->prm.body_walls = 0;
+  for (int w = 0; w < e->c->n_walls; w++) {
+    const struct body *b = &e->c->walls[w].body;
+    if (!b->active) continue;
+    struct body_run *r = &B->run[B->n++];
+    r->wall = w;
+    rigid_initial(b, r->y);
+    memcpy(r->y0, r->y, sizeof r->y);
+    e->prm.body_walls |= 1u << w;
+  }
+  if (!B->n) return;
+  B->counts = mem_calloc((size_t)e->n_ranks, sizeof(int), "body loads");
+  B->displs = mem_calloc((size_t)e->n_ranks, sizeof(int), "body loads");
+  MPI_Type_contiguous((int)sizeof(struct body_load), MPI_BYTE, &B->load_type);
+  MPI_Type_commit(&B->load_type);
+}
+
+void bodies_frames(const struct engine *e, struct frame *f) {
+  for (int k = 0; k < e->bodies.n; k++) {
+    const struct body_run *r = &e->bodies.run[k];
+    rigid_frame(&e->c->walls[r->wall].body, e->p.dim, r->y, r->acc, r->ang_acc, &f[r->wall]);
+  }
+}
+
+/* Order of the gathered loads: by body wall, then by fluid particle id. */
+static int load_order(const void *a, const void *b) {
+  const struct body_load *x = a, *y = b;
+  if (x->wall != y->wall) return x->wall < y->wall ? -1 : 1;
+  return (x->id > y->id) - (x->id < y->id);
+}
+
+/* Gather every rank's loads into B->all, sorted; returns their count. */
+static long gather_loads(struct engine *e) {
+  struct bodies *B = &e->bodies;
+  int mine = (int)B->loads.n;
+  MPI_Allgather(&mine, 1, MPI_INT, B->counts, 1, MPI_INT, e->comm);
+  long total = 0;
+  for (int r = 0; r < e->n_ranks; r++) {
+    B->displs[r] = (int)total;
+    total += B->counts[r];
+  }
+  if (total > B->all_cap) {
+    B->all_cap = total + total / 2;
+    B->all = mem_realloc(B->all, mem_bytes((size_t)B->all_cap, sizeof *B->all, "body loads"), "body loads");
+  }
+  MPI_Allgatherv(B->loads.at, mine, B->load_type, B->all, B->counts, B->displs, B->load_type, e->comm);
+  qsort(B->all, (size_t)total, sizeof *B->all, load_order);
+  B->loads.n = 0;
+  return total;
+}
+
+/* Force and torque about the centre of mass of body r from the sorted loads [first, end). */
+static void sum_loads(const struct body_load *l, long n, struct body_run *r) {
+  const double *c = &r->y[RB_X];
+  memset(r->force, 0, sizeof r->force);
+  memset(r->torque, 0, sizeof r->torque);
+  for (long k = 0; k < n; k++) {
+    double arm[3] = {l[k].x[0] - c[0], l[k].x[1] - c[1], l[k].x[2] - c[2]};
+    const double *f = l[k].force;
+    for (int d = 0; d < 3; d++) r->force[d] += f[d];
+    r->torque[0] += arm[1] * f[2] - arm[2] * f[1];
+    r->torque[1] += arm[2] * f[0] - arm[0] * f[2];
+    r->torque[2] += arm[0] * f[1] - arm[1] * f[0];
+  }
+}
+
+void bodies_evaluate(struct engine *e) {
+  struct bodies *B = &e->bodies;
+  long total = gather_loads(e), first = 0;
+  for (int k = 0; k < B->n; k++) {
+    struct body_run *r = &B->run[k];
+    long end = first;
+    while (end < total && B->all[end].wall == r->wall) end++;
+    sum_loads(B->all + first, end - first, r);
+    first = end;
+    rigid_rates(&e->c->walls[r->wall].body, e->p.dim, r->y, r->force, r->torque, e->c->gravity, r->rate, r->acc,
+                r->ang_acc);
+  }
+}
+
+void bodies_save(struct engine *e) {
+  for (int k = 0; k < e->bodies.n; k++) memcpy(e->bodies.run[k].y0, e->bodies.run[k].y, sizeof e->bodies.run[k].y);
+}
+
+void bodies_rk_update(struct engine *e, int s, double ws, double step, int last) {
+  for (int k = 0; k < e->bodies.n; k++) {
+    struct body_run *r = &e->bodies.run[k];
+    for (int j = 0; j < RB_STATE; j++) {
+      r->sum[j] = (s ? r->sum[j] : 0) + ws * r->rate[j];
+      r->y[j] = r->y0[j] + step * (!last ? r->rate[j] : r->sum[j]);
+    }
+    if (last) rigid_normalise(e->p.dim, r->y);
+  }
+}
+
+/* The columns of a body in bodies.csv: the state's, then force and torque (2D: x, y, theta, vx,
+ * vy, omega, fx, fy, torque). */
+static const char *const COLUMNS_2D[] = {"x", "y", "theta", "vx", "vy", "omega", "fx", "fy", "torque", NULL};
+static const char *const COLUMNS_3D[] = {"x", "y", "z", "qw", "qx", "qy", "qz", "vx", "vy", "vz", "wx", "wy",
+                                         "wz", "fx", "fy", "fz", "tx", "ty", "tz", NULL};
+
+void bodies_csv_header(const struct engine *e, FILE *f) {
+  const char *const *col = e->p.dim == 2 ? COLUMNS_2D : COLUMNS_3D;
+  fputs("step,time", f);
+  for (int k = 0; k < e->bodies.n; k++)
+    for (int j = 0; col[j]; j++) fprintf(f, ",body%d_%s", e->bodies.run[k].wall, col[j]);
+  fputc('\n', f);
+}
+
+/* Body r's values in the order of its columns. */
+static int row_values(const struct body_run *r, int dim, double *v) {
+  int n = 0;
+  for (int d = 0; d < dim; d++) v[n++] = r->y[RB_X + d];
+  if (dim == 2) v[n++] = r->y[RB_THETA];
+  else
+    for (int j = 0; j < 4; j++) v[n++] = r->y[RB_Q + j];
+  for (int d = 0; d < dim; d++) v[n++] = r->y[RB_V + d];
+  for (int d = 3 - (dim == 2 ? 1 : 3); d < 3; d++) v[n++] = r->y[RB_W + d];
+  for (int d = 0; d < dim; d++) v[n++] = r->force[d];
+  for (int d = 3 - (dim == 2 ? 1 : 3); d < 3; d++) v[n++] = r->torque[d];
+  return n;
+}
+
+void bodies_csv_row(const struct engine *e, FILE *f) {
+  fprintf(f, "%ld,%.10g", e->step, e->time);
+  for (int k = 0; k < e->bodies.n; k++) {
+    double v[32];
+    for (int j = 0, n = row_values(&e->bodies.run[k], e->p.dim, v); j < n; j++) fprintf(f, ",%.12g", v[j]);
+  }
+  fputc('\n', f);
+}
+
+int bodies_numbers(struct engine *e, struct hdf5_number *v) {
+  int n = 0;
+  for (int k = 0; k < e->bodies.n; k++) {
+    struct body_run *r = &e->bodies.run[k];
+    for (int j = 0; j < BODY_NUMBERS; j++) {
+      double *at = j < RB_STATE ? &r->y[j] : j < RB_STATE + 3 ? &r->acc[j - RB_STATE] : &r->ang_acc[j - RB_STATE - 3];
+      snprintf(r->names[j], sizeof r->names[j], "body%d_%s%d", r->wall,
+               j < RB_STATE ? "state" : j < RB_STATE + 3 ? "acc" : "ang_acc", j < RB_STATE ? j : (j - RB_STATE) % 3);
+      v[n++] = (struct hdf5_number){r->names[j], at, NULL};
+    }
+  }
+  return n;
+}
+
+void bodies_free(struct bodies *B) {
+  free(B->loads.at);
+  free(B->all);
+  free(B->counts);
+  free(B->displs);
+  if (B->n) MPI_Type_free(&B->load_type);
+  memset(B, 0, sizeof *B);
+}
