@@ -6,11 +6,6 @@
                                          the fixed body's force over t >= T0 (mean) equals the
                                          buoyancy RHO G AREA within 1 %, its torque is below 1 % of
                                          the buoyancy times HALF_WIDTH
-  check_bodies.py draft RUN DRAFT HEIGHT T0
-                                         the draft (the water level of the run's elevation probes,
-                                         mean of them, minus the body's bottom: centre - HEIGHT/2)
-                                         averaged over t >= T0 is DRAFT within 2 %, and the body has
-                                         come to rest there (its heave within 2 % of DRAFT)
 """
 import sys
 import numpy as np
@@ -77,26 +72,9 @@ def check_buoyancy(run, rho, g, area, half_width, t0):
     assert torque < 0.01 * expected * half_width, "torque above 1 % of buoyancy x half-width"
 
 
-def check_draft(run, draft, height, t0):
-    _, k, _ = body_of(run)
-    b, p = table(f"{run}/bodies.csv"), table(f"{run}/probes.csv")
-    levels = [c for c in p.dtype.names if c not in ("step", "time")]
-    level = np.interp(b["time"], p["time"], np.mean([p[c] for c in levels], axis=0))
-    measured = level - (b[f"body{k}_y"] - height / 2)
-    late = b["time"] >= t0
-    mean, spread = np.mean(measured[late]), np.ptp(b[f"body{k}_y"][late])
-    print(f"draft over t >= {t0} s: {mean:.5f} m against M/(rho B) = {draft:.5f} m "
-          f"({100 * (mean / draft - 1):+.2f} %); heave range {spread:.2e} m "
-          f"({100 * spread / draft:.2f} % of the draft); draft at t = 0: {measured[0]:.4f} m")
-    assert abs(mean / draft - 1) < 0.02, "draft off by more than 2 %"
-    assert spread < 0.02 * draft, "the body has not come to rest"
-
-
 if __name__ == "__main__":
     what, run, *args = sys.argv[1:]
     if what == "fall":
         check_fall(run)
-    elif what == "buoyancy":
-        check_buoyancy(run, *map(float, args))
     else:
-        check_draft(run, *map(float, args))
+        check_buoyancy(run, *map(float, args))

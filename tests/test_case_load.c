@@ -339,6 +339,7 @@ static void same_lists(const struct case_def *a, const struct case_def *b) {
     CHECK(a->walls[i].fluid_side == b->walls[i].fluid_side, "wall %d side", i);
     CHECK(memcmp(&a->walls[i].motion, &b->walls[i].motion, sizeof(a->walls[i].motion)) == 0 &&
           a->walls[i].moving == b->walls[i].moving, "wall %d motion", i);
+    CHECK(memcmp(&a->walls[i].body, &b->walls[i].body, sizeof(a->walls[i].body)) == 0, "wall %d body", i);
   }
   for (int i = 0; i < a->n_probes; i++) {
     CHECK(strcmp(a->probes[i].name, b->probes[i].name) == 0, "probe %d name", i);
@@ -625,6 +626,30 @@ static void test_motion_table(void) {
                0, NULL, "case.yaml:13: walls.0.motion.centre: got a centre without a table", "rotation.centre");
 }
 
+/* Rigid bodies: the defaults from the shape, the degrees of freedom, the round trip (2D and 3D)
+ * and the refusals. */
+static void test_bodies(void) {
+  const char *body2 = "walls: [{box: {min: [0, 0], max: [1, 1]}}, {box: {min: [0.2, 0.4], max: [0.6, 0.6]}, "
+                      "fluid_side: outside, body: {mass: 12, velocity: [0, -1], fixed: [x, rotation]}}]";
+  struct case_def c;
+  CHECK(load(variant(13, body2), 0, NULL, &c) == 0, "body loads: %s", err);
+  const struct body *b = &c.walls[1].body;
+  CHECK(b->active && c.walls[1].moving && !c.walls[0].body.active, "wall 1 is a body, wall 0 is not");
+  CHECK_CLOSE(b->centre[0], 0.4, 1e-15, "default centre: the box's");
+  CHECK_CLOSE(b->inertia[2], 12 * (0.16 + 0.04) / 12, 1e-15, "default I_zz: the box's, M (a^2 + b^2)/12");
+  CHECK(b->fixed == (BODY_DOF_X | BODY_DOF_RZ) && b->velocity[1] == -1, "fixed x and rotation, velocity");
+  round_trip(variant(13, body2));
+  round_trip(case_3d("walls: [{box: {min: [0, 0, 0], max: [0.2, 0.1, 0.3]}, fluid_side: outside, body: "
+                     "{mass: 3, inertia: [1, 2, 3], angular_velocity: [0, 0, 1], fixed: [z, rx, ry]}}]"));
+  expect_error(variant(13, "walls: [{box: {min: [0, 0], max: [1, 1]}, body: {mass: 1, fixed: [rz]}}]"),
+               0, NULL, "case.yaml:13: walls.0.body.fixed.0: got 'rz'", "x, y, rotation");
+  expect_error(variant(13, "walls: [{box: {min: [0, 0], max: [1, 1]}, body: {fixed: [x]}}]"),
+               0, NULL, "walls.0.body.mass: missing required key", "a number > 0");
+  expect_error(variant(13, "walls: [{box: {min: [0, 0], max: [1, 1]}, body: {mass: 1}, motion: {translation: "
+                           "{amplitude: [0.01, 0], period: 1}}}]"),
+               0, NULL, "walls.0.motion: got a motion and a body", "one of them");
+}
+
 int main(void) {
   strcpy(dir, "/tmp/test_case_load.XXXXXX");
   if (!mkdtemp(dir)) return 1;
@@ -641,6 +666,7 @@ int main(void) {
   test_probe_kinds();
   test_motion_table();
   test_motion_axis();
+  test_bodies();
   test_lattice_origin();
   test_velocity_mode();
   unlink(path);

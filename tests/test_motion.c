@@ -1,11 +1,16 @@
 /* test_motion.c — prescribed wall motion: the analytic velocity and acceleration of a body point
  * against central differences of its position (2D, and 3D about a general axis), ramps, the
  * identity of an inactive motion, and the 3D rotation: an orthonormal matrix turning by the angle
- * about its axis, equal to the rotation about z with the axes permuted. */
+ * about its axis, equal to the rotation about z with the axes permuted. A rigid body's equations
+ * of motion (physics/rigid_body.h): Newton's law with fixed degrees of freedom, Euler's equations
+ * in the case axes for a turned body against the world-frame formula, the quaternion's rate, the
+ * frame of a spinning body, and the mass properties of the shapes (case/geometry.h). */
 #include <math.h>
 #include <string.h>
 #include "check.h"
+#include "case/geometry.h"
 #include "case/motion.h"
+#include "physics/rigid_body.h"
 
 /* Position of body point x_ref at time t in dim dimensions. */
 static void position_at(const struct wall_motion *m, int dim, double t, const double *x_ref, double *x) {
@@ -178,6 +183,89 @@ static void test_axis_3d(void) {
   test_permuted_axes(&m);
 }
 
+/* Newton in 2D with a fixed degree of freedom; Euler in 3D: a body with principal moments
+ * (1, 2, 3) turned by 90 degrees about z has the world inertia diag(2, 1, 3), so at omega =
+ * (1, 1, 0) without torque alpha = -I_w^-1 (omega x I_w omega) = (0, 0, 1/3); q' = (0, w) q / 2. */
+static void test_rigid_rates(void) {
+  struct body b = {.active = 1, .mass = 2.0, .inertia = {1, 2, 3}, .fixed = BODY_DOF_Y};
+  double y[RB_STATE], rate[RB_STATE], acc[3], alpha[3], g[3] = {0, -9.81, 0};
+  double force[3] = {4.0, 6.0, 0}, torque[3] = {0, 0, 1.5};
+  rigid_initial(&b, y);
+  rigid_rates(&b, 2, y, force, torque, g, rate, acc, alpha);
+  CHECK_CLOSE(acc[0], 2.0, 0, "2D: F/M");
+  CHECK(acc[1] == 0 && rate[RB_V + 1] == 0, "2D: a fixed y has no acceleration (%g)", acc[1]);
+  CHECK_CLOSE(alpha[2], 0.5, 0, "2D: T/I_zz");
+  b.fixed = 0;
+  double zero[3] = {0, 0, 0}, h = sqrt(0.5);
+  y[RB_Q] = h, y[RB_Q + 3] = h;                      /* 90 degrees about z */
+  y[RB_W] = 1, y[RB_W + 1] = 1, y[RB_W + 2] = 0;
+  rigid_rates(&b, 3, y, zero, zero, zero, rate, acc, alpha);
+  CHECK_CLOSE(alpha[0], 0, 1e-15, "3D Euler, turned body: alpha_x");
+  CHECK_CLOSE(alpha[1], 0, 1e-15, "3D Euler, turned body: alpha_y");
+  CHECK_CLOSE(alpha[2], 1.0 / 3, 1e-15, "3D Euler, turned body: alpha_z");
+  rigid_initial(&b, y);
+  y[RB_W + 2] = 2;
+  rigid_rates(&b, 3, y, zero, zero, zero, rate, acc, alpha);
+  CHECK(rate[RB_Q] == 0 && rate[RB_Q + 1] == 0 && rate[RB_Q + 2] == 0 && rate[RB_Q + 3] == 1,
+        "q' of the identity spinning at 2 rad/s about z: (%g, %g, %g, %g)", rate[RB_Q], rate[RB_Q + 1],
+        rate[RB_Q + 2], rate[RB_Q + 3]);
+}
+
+/* The frame of a 3D body turned 0.7 rad about [1, 2, 2]/3 and spinning at w: it turns a body point
+ * about the centre of mass by that rotation, and its velocity and acceleration are v + w x r and
+ * a + alpha x r + w x (w x r). */
+static void test_rigid_frame(void) {
+  struct body b = {.active = 1, .mass = 1, .centre = {0.1, 0.2, 0.3}, .inertia = {1, 1, 1}};
+  double y[RB_STATE], acc[3] = {0.5, 0, -1}, alpha[3] = {0, 2, 0}, k[3] = {1.0 / 3, 2.0 / 3, 2.0 / 3};
+  rigid_initial(&b, y);
+  y[RB_X] = 1.1, y[RB_V + 1] = 3;
+  y[RB_Q] = cos(0.35);
+  for (int d = 0; d < 3; d++) y[RB_Q + 1 + d] = sin(0.35) * k[d];
+  y[RB_W] = 1, y[RB_W + 2] = -2;
+  struct frame f;
+  rigid_frame(&b, 3, y, acc, alpha, &f);
+  CHECK_CLOSE(f.theta, 0.7, 1e-15, "body frame: angle from the quaternion");
+  for (int d = 0; d < 3; d++) CHECK_CLOSE(f.axis[d], k[d], 1e-15, "body frame: axis from the quaternion");
+  double x[3] = {1.3, 0.2, 0.5}, u[3], a[3], r[3], w[3] = {1, 0, -2};
+  for (int d = 0; d < 3; d++) r[d] = x[d] - y[RB_X + d];
+  frame_velocity(&f, 3, x, u);
+  frame_acceleration(&f, 3, x, a);
+  double wr[3] = {w[1] * r[2] - w[2] * r[1], w[2] * r[0] - w[0] * r[2], w[0] * r[1] - w[1] * r[0]};
+  double ar[3] = {alpha[1] * r[2], 0, -alpha[1] * r[0]};   /* alpha x r for alpha = (0, 2, 0) */
+  double wwr[3] = {w[1] * wr[2] - w[2] * wr[1], w[2] * wr[0] - w[0] * wr[2], w[0] * wr[1] - w[1] * wr[0]};
+  for (int d = 0; d < 3; d++) {
+    CHECK_CLOSE(u[d], y[RB_V + d] + wr[d], 1e-14, "body frame: v + w x r");
+    CHECK_CLOSE(a[d], acc[d] + ar[d] + wwr[d], 1e-14, "body frame: a + alpha x r + w x (w x r)");
+  }
+}
+
+/* Centroid and inertia per unit mass: a box, an annulus, a ball, and a right triangle with legs
+ * a, b at the origin (centroid (a/3, b/3), I_zz/M = (a^2 + b^2)/18); a rectangle as a polygon
+ * equals the box. */
+static void test_mass_properties(void) {
+  struct shape box = {.kind = SHAPE_BOX, .min = {0, 0, 0}, .max = {2, 1, 0.5}};
+  struct shape ring = {.kind = SHAPE_CIRCLE, .centre = {1, 2, 3}, .radius = 2, .inner_radius = 1};
+  struct shape tri = {.kind = SHAPE_POLYGON, .n_vertices = 3, .vertex = {{0, 0}, {3, 0}, {0, 2}}};
+  struct shape rect = {.kind = SHAPE_POLYGON, .n_vertices = 4, .vertex = {{0, 0}, {2, 0}, {2, 1}, {0, 1}}};
+  double c[3], I[3], cb[3], Ib[3];
+  shape_mass_properties(&box, 3, c, I);
+  CHECK_CLOSE(I[0], (1 + 0.25) / 12, 1e-15, "box I_xx");
+  CHECK_CLOSE(I[2], (4 + 1) / 12.0, 1e-15, "box I_zz");
+  CHECK_CLOSE(c[1], 0.5, 0, "box centroid");
+  shape_mass_properties(&ring, 2, c, I);
+  CHECK_CLOSE(I[2], (4 + 1) / 2.0, 1e-15, "annulus I_zz");
+  shape_mass_properties(&ring, 3, c, I);
+  CHECK_CLOSE(I[0], 2.0 / 5 * (32 - 1) / (8 - 1), 1e-14, "spherical shell I");
+  shape_mass_properties(&tri, 2, c, I);
+  CHECK_CLOSE(c[0], 1, 1e-15, "triangle centroid x");
+  CHECK_CLOSE(c[1], 2.0 / 3, 1e-15, "triangle centroid y");
+  CHECK_CLOSE(I[2], (9 + 4) / 18.0, 1e-14, "triangle I_zz");
+  box.max[2] = 0;
+  shape_mass_properties(&box, 2, cb, Ib);
+  shape_mass_properties(&rect, 2, c, I);
+  CHECK_CLOSE(I[2], Ib[2], 1e-15, "rectangle as polygon = box");
+}
+
 int main(void) {
   struct wall_motion m;
   memset(&m, 0, sizeof(m));
@@ -208,5 +296,8 @@ int main(void) {
   CHECK(f.theta == 0 && f.omega == 0, "a smooth ramp starts at rest: theta %g, rate %g", f.theta, f.omega);
   test_table();
   test_axis_3d();
+  test_rigid_rates();
+  test_rigid_frame();
+  test_mass_properties();
   return check_report("test_motion");
 }
