@@ -641,13 +641,15 @@ static void test_bodies(void) {
   round_trip(variant(13, body2));
   round_trip(case_3d("walls: [{box: {min: [0, 0, 0], max: [0.2, 0.1, 0.3]}, fluid_side: outside, body: "
                      "{mass: 3, inertia: [1, 2, 3], angular_velocity: [0, 0, 1], fixed: [z, rx, ry]}}]"));
-  expect_error(variant(13, "walls: [{box: {min: [0, 0], max: [1, 1]}, body: {mass: 1, fixed: [rz]}}]"),
-               0, NULL, "case.yaml:13: walls.0.body.fixed.0: got 'rz'", "x, y, rotation");
-  expect_error(variant(13, "walls: [{box: {min: [0, 0], max: [1, 1]}, body: {fixed: [x]}}]"),
-               0, NULL, "walls.0.body.mass: missing required key", "a number > 0");
-  expect_error(variant(13, "walls: [{box: {min: [0, 0], max: [1, 1]}, body: {mass: 1}, motion: {translation: "
-                           "{amplitude: [0.01, 0], period: 1}}}]"),
-               0, NULL, "walls.0.motion: got a motion and a body", "one of them");
+  static const char *const refused[][3] = {   /* walls (line 13), where, what is expected */
+      {"walls: [{box: {min: [0, 0], max: [1, 1]}, body: {mass: 1, fixed: [rz]}}]",
+       "case.yaml:13: walls.0.body.fixed.0: got 'rz'", "x, y, rotation"},
+      {"walls: [{box: {min: [0, 0], max: [1, 1]}, body: {fixed: [x]}}]", "walls.0.body.mass: missing required key",
+       "a number > 0"},
+      {"walls: [{box: {min: [0, 0], max: [1, 1]}, body: {mass: 1}, motion: {translation: {amplitude: [0.01, 0], "
+       "period: 1}}}]", "walls.0.motion: got a motion and a body", "one of them"}};
+  for (size_t k = 0; k < sizeof refused / sizeof refused[0]; k++)
+    expect_error(variant(13, refused[k][0]), 0, NULL, refused[k][1], refused[k][2]);
 }
 
 int main(void) {
