@@ -31,7 +31,7 @@ def col(runs, key):
 
 def pct(x):
     """A fraction as a percentage, or 'none' when it is not a number."""
-    return "%.1f %%" % (100 * x) if math.isfinite(x) else "none"
+    return "%.2f %%" % (100 * x) if math.isfinite(x) else "none"
 
 
 def verdict(ok):
