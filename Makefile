@@ -139,6 +139,8 @@ run: deps
 
 # Benchmarks (issue 6): doc/performance.md and doc/performance.csv from measured runs only.
 # BENCH_QUICK=1: a few-minute smoke version written to build/bench/ instead of doc/.
+# DUALSPHYSICS=BIN adds the peer comparison of issue 23 (scripts/bench_peer.py) with that
+# DualSPHysics CPU binary; DUALSPHYSICS_SRC=DIR its source tree if not three levels above BIN.
 BENCH_TOOLS := build/bench/peak_fma build/bench/bench_hdf5
 build/bench/peak_fma: scripts/bench/peak_fma.c | build/bench
 	@$(MPICC) $(CFLAGS) $< -o $@
@@ -155,7 +157,8 @@ build/tests/test_no_alloc: tests/test_no_alloc.c tests/check.h tests/engine_test
 	  -Wl,--wrap=malloc,--wrap=calloc,--wrap=realloc
 bench: deps
 	@$(MAKE) --no-print-directory build/mpsph $(BENCH_TOOLS)
-	@$(PYTHON) scripts/bench.py $(if $(BENCH_QUICK),--quick)
+	@$(PYTHON) scripts/bench.py $(if $(BENCH_QUICK),--quick) $(if $(DUALSPHYSICS),--dualsphysics $(DUALSPHYSICS)) \
+	  $(if $(DUALSPHYSICS_SRC),--dualsphysics-src $(DUALSPHYSICS_SRC))
 
 # The validation ladder and doc/validation/README.md; QUICK=1: the cheap rungs only (~19 min on
 # 2 cores). Runs go to runs/validate/; VALIDATE_ARGS passes e.g. --only STUDY or --reuse.

@@ -6,12 +6,16 @@ scaling 1 -> 2 -> 4 ranks, weak scaling of a 3D dam break to 64 ranks (oversubsc
 memory, and the memory estimate of `check --ranks`), the scene with each optional term switched
 off, the single-phase scene
 through the multiphase and the SINGLE_PHASE=1 builds, one core's multiply-add peak and the HDF5
-snapshot bandwidth against a raw write; then writes doc/performance.md and doc/performance.csv
+snapshot bandwidth against a raw write, and, given a DualSPHysics binary, the peer comparison
+of issue 23 (scripts/bench_peer.py); then writes doc/performance.md and doc/performance.csv
 from the measured numbers only (nothing in the report is typed in by hand).
 
-Usage: scripts/bench.py [--quick] [--repeats N] [--sizes N] [--out DIR]
+Usage: scripts/bench.py [--quick] [--repeats N] [--sizes N] [--out DIR] [--dualsphysics BIN [--dualsphysics-src DIR]]
   --quick    small sizes and few steps (a few minutes); writes to build/bench/ unless --out
   --sizes N  only the first N sizes of each scene (the smoke test uses 1)
+  --dualsphysics BIN  run the peer comparison with this DualSPHysics CPU binary (without it the
+             comparison is skipped); --dualsphysics-src: its source tree (default: three levels
+             above BIN)
 Needs build/mpsph, build/bench/peak_fma and build/bench/bench_hdf5 (make bench builds them)."""
 import argparse
 import csv
@@ -45,12 +49,13 @@ FULL = {"dx": {"1phase": [0.0085, 0.00424, 0.00212], "2phase": [0.024, 0.012, 0.
         "term_dx": 0.012, "term_steps": 20, "sp_dx": 0.00424, "sp_steps": 60,
         "hdf5_particles": [160000, 2000000], "repeats": 3, "peak_seconds": 2.0,
         "cluster_ranks": [1, 2, 4, 8, 16, 32, 64], "cluster_per_rank": 20000, "cluster_dx": 0.02,
-        "cluster_steps": 4}
+        "cluster_steps": 4, "peer_seconds": 0.1, "peer_front_seconds": None}
 QUICK = {"dx": {"1phase": [0.02, 0.0142, 0.01], "2phase": [0.024, 0.017, 0.012]},
          "steps": [10, 8, 6], "weak_dx": [0.024, 0.017, 0.012], "weak_steps": 6,
          "term_dx": 0.04, "term_steps": 6, "sp_dx": 0.01, "sp_steps": 10,
          "hdf5_particles": [100000], "repeats": 2, "peak_seconds": 0.3,
-         "cluster_ranks": [1, 2, 4], "cluster_per_rank": 10000, "cluster_dx": 0.04, "cluster_steps": 2}
+         "cluster_ranks": [1, 2, 4], "cluster_per_rank": 10000, "cluster_dx": 0.04, "cluster_steps": 2,
+         "peer_seconds": 0.01, "peer_front_seconds": 0.1}
 
 # The two-phase scene with every optional term on, and each term switched off in turn.
 TERMS_ON = ["physics.acoustic_damper=10", "physics.free_surface=on", "physics.tensile_control=true",
@@ -210,8 +215,9 @@ def machine():
 class Bench:
     """Runs the benchmark groups and collects their results."""
 
-    def __init__(self, cfg, repeats, n_sizes, work, log):
+    def __init__(self, cfg, repeats, n_sizes, work, log, peer=(None, None)):
         self.cfg, self.repeats, self.n_sizes, self.work, self.log = cfg, repeats, n_sizes, work, log
+        self.peer_binary, self.peer_src = peer
         self.res = {}
 
     def say(self, msg):
@@ -295,6 +301,19 @@ class Bench:
                 # the first pair warms the file system up; it is dropped
                 self.res[("hdf5", n, ranks)] = (nbytes, t["hdf5"][1:], t["raw"][1:])
 
+    def peer(self):
+        """DualSPHysics against mpsph on the same dam break (scripts/bench_peer.py): the repeats
+        as interleaved rounds of peer_seconds of flow on 1 and 2 cores, then both fronts against
+        Martin & Moyce over peer_front_seconds (None: the case's window). Skipped, with a message
+        in the log and the report, without a binary."""
+        if not self.peer_binary:
+            self.say("peer: skipped (no DualSPHysics binary: make bench DUALSPHYSICS=...)")
+            self.res["peer"] = None
+            return
+        import bench_peer
+        self.res["peer"] = bench_peer.measure(self.peer_binary, self.peer_src, self.work, self.repeats,
+                                              self.cfg["peer_seconds"], self.cfg["peer_front_seconds"], self.say)
+
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
@@ -302,7 +321,9 @@ def main():
     ap.add_argument("--repeats", type=int)
     ap.add_argument("--sizes", type=int, default=3)
     ap.add_argument("--out")
-    ap.add_argument("--only", help="comma-separated groups (sizes,weak,terms,single_phase,hdf5,cluster) to run "
+    ap.add_argument("--dualsphysics", help="DualSPHysics CPU binary for the peer comparison")
+    ap.add_argument("--dualsphysics-src", help="its source tree (default: three levels above the binary)")
+    ap.add_argument("--only", help="comma-separated groups (sizes,weak,terms,single_phase,hdf5,cluster,peer) to run "
                     "again into the results saved by the last run; the report names them")
     ap.add_argument("--report-only", action="store_true",
                     help="rewrite the report from the results saved by the last run into the same --out "
@@ -326,7 +347,7 @@ def main():
         "build/bench/mpsph-single-phase"])
     t0 = time.time()
     m = machine()
-    b = Bench(cfg, a.repeats or cfg["repeats"], a.sizes, work, sys.stdout)
+    b = Bench(cfg, a.repeats or cfg["repeats"], a.sizes, work, sys.stdout, (a.dualsphysics, a.dualsphysics_src))
     peaks = [b.peak()]
     b.sizes()
     b.weak()
@@ -334,6 +355,7 @@ def main():
     b.single_phase()
     b.hdf5()
     b.cluster()
+    b.peer()
     peaks.append(b.peak())
     m["load_end"] = os.getloadavg()
     m["seconds"] = time.time() - t0
@@ -349,6 +371,7 @@ def rerun(a, saved, out):
         b, m, peaks, cfg, quick = pickle.load(f)
     sh(["make", "--no-print-directory", "build/mpsph", "build/bench/bench_hdf5", "build/bench/mpsph-single-phase"])
     b.log = sys.stdout
+    b.peer_binary, b.peer_src = a.dualsphysics, a.dualsphysics_src
     t0, info = time.time(), machine()
     for group in a.only.split(","):
         getattr(b, group)()

@@ -29,6 +29,11 @@ def col(runs, key):
     return [r[key] for r in runs]
 
 
+def pct(x):
+    """A fraction as a percentage, or 'none' when it is not a number."""
+    return "%.2f %%" % (100 * x) if math.isfinite(x) else "none"
+
+
 def verdict(ok):
     return "**met**" if ok else "**missed**"
 
@@ -551,6 +556,69 @@ class Report:
                "network contention, and the re-partitions (their measured time above, every few hundred "
                "steps at most)." % tuple(frac), "")
 
+    def peer(self):
+        """Section 10: DualSPHysics against mpsph on the same dam break (bench_peer.py), or the
+        note that it was skipped."""
+        p = self.b.res.get("peer")
+        self.w("## 10. Peer comparison: DualSPHysics on the same dam break (issue 23)", "")
+        if not p:
+            self.w("Skipped: no DualSPHysics binary was given. `make bench DUALSPHYSICS=/path/to/"
+                   "DualSPHysics5.4CPU_linux64` runs it (`DUALSPHYSICS_SRC=` names the binary's source tree "
+                   "if it is not three levels above the binary; README.md, `make bench`).", "")
+            return
+        d, prm = p["def"], p["parameters"]
+        self.w("DualSPHysics' 2D dam break CaseDambreakVal2D (column %g x %g m in a tank %g x %g m, dp = %g m, "
+               "%d fluid particles, coefsound %g: c0 = %.2f m/s) with the parameters of its source's "
+               "`_Def.xml` (StepAlgorithm %s, Kernel %s, ViscoTreatment %s, Visco %s, DensityDT %s, "
+               "DensityDTvalue %s, Shifting %s; cflnumber %g), binary `%s`; and mpsph's case of the same "
+               "geometry, spacing and sound speed, `scripts/bench/dambreak-val2d.yaml` (delta-plus, "
+               "shifting none, artificial viscosity 0.02, CFL 1.0, no acoustic damper). Each code runs "
+               "%g s of flow on 1 and 2 cores (DualSPHysics `-ompthreads:N`, mpsph N ranks), writing "
+               "only the initial and final state; %d interleaved rounds (per round and core count "
+               "DualSPHysics, then mpsph), wall time of the whole process (start-up included) measured "
+               "by the bench. Ratio = mpsph / DualSPHysics within each round; median [min-max]." % (
+                   d["fluid"][0], d["fluid"][1], d["tank"][0], d["tank"][1], d["dp"], p["fluid"], d["coefsound"], p["c0"],
+                   prm.get("StepAlgorithm"), prm.get("Kernel"), prm.get("ViscoTreatment"), prm.get("Visco"),
+                   prm.get("DensityDT"), prm.get("DensityDTvalue"), prm.get("Shifting"), d["cfl"], p["binary"],
+                   p["seconds"], p["rounds"]), "",
+               "| cores | DualSPHysics s | its steps | mpsph s | its steps (RK4) | mpsph / DualSPHysics time |",
+               "|---|---|---|---|---|---|")
+        for cores, t in sorted(p["times"].items()):
+            ratio = [m[0] / q[0] for m, q in zip(t["mpsph"], t["dualsphysics"])]
+            steps = {code: med([x[1] for x in t[code]]) for code in t}
+            self.w("| %d core%s | %s | %d | %s | %d | %s |" % (
+                cores, "s" if cores > 1 else "", mmm([x[0] for x in t["dualsphysics"]], "%.2f"), steps["dualsphysics"],
+                mmm([x[0] for x in t["mpsph"]], "%.2f"), steps["mpsph"], mmm(ratio, "%.3f")))
+            for metric, values in (("mpsph_over_dualsphysics_time", ratio),
+                                   ("dualsphysics_seconds", [x[0] for x in t["dualsphysics"]]),
+                                   ("mpsph_seconds", [x[0] for x in t["mpsph"]])):
+                self.row("peer", "dambreak-val2d", p["fluid"], cores, steps["mpsph"], metric, values,
+                         "ratio" if metric.endswith("time") else "s")
+        self.peer_fronts(p)
+
+    def peer_fronts(self, p):
+        """The fronts' errors of the peer comparison, over the timed window and the front window."""
+        f = p["fronts"]
+        self.w("", "Accuracy of the same settings: each code's surge front (largest x of a fluid particle "
+               "with at least 2 fluid neighbours within 1.5 dp, from x = 0 at the left wall) every 0.01 s "
+               "of one run of %g s of flow on 2 cores, against Martin & Moyce (1952, n^2 = 2, a = %g m: "
+               "`%s`): RMS of (Z_SPH - Z_exp) / Z_exp over the experimental points, Z = x / a, T = t "
+               "sqrt(2 g / a). The timed window (t <= %g s, T <= %.2f) holds the points up to it; the "
+               "longer window ends at %g s (T = %.2f)%s. The time ratios above are at these errors." % (
+                   f["seconds"], p["def"]["fluid"][0], "cases/dambreak-1phase/reference/"
+                   "dambreak_surge_front_martin_moyce1952_table.csv", f["timed_s"], f["T_timed"], f["seconds"], f["T_end"],
+                   ", past the last point before the front reaches the far wall" if f.get("to_far_wall")
+                   else " (shortened: not the case's whole window)"), "",
+               "| code | front error, t <= %g s | points | front error, t <= %g s | points |" % (f["timed_s"], f["seconds"]),
+               "|---|---|---|---|---|")
+        for code, label in (("dualsphysics", "DualSPHysics"), ("mpsph", "mpsph")):
+            e = f[code]
+            self.w("| %s | %s | %s | %s | %s |" % (label, pct(e["timed"][0]), e["timed"][1], pct(e["window"][0]), e["window"][1]))
+            for metric, err in (("front_error_timed_window_" + code, e["timed"][0]), ("front_error_window_" + code, e["window"][0])):
+                if math.isfinite(err):
+                    self.row("peer", "dambreak-val2d", p["fluid"], 2, 0, metric, [err], "fraction")
+        self.w("")
+
     def write(self, out):
         self.header()
         body_start = len(self.md)
@@ -564,6 +632,7 @@ class Report:
         self.single_phase()
         self.no_alloc()
         self.cluster()
+        self.peer()
         self.closing()
         self.md[body_start:body_start] = self.target_table()
         with open(os.path.join(out, "performance.md.tmp"), "w") as f:

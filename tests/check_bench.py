@@ -6,7 +6,9 @@ per core is in a plausible range, agrees with the same run's main-pass figures, 
 above the measured peak; every benchmark of the suite (scenes x ranks, weak scaling, each
 optional term, the single-phase build, the HDF5 sizes, the 3D weak-scaling rank counts) has its
 rows in the CSV and in the
-report, whose sections and target verdicts are all there. Prints each problem and exits 1 if
+report, whose sections and target verdicts are all there; the peer comparison (DualSPHysics) is
+either marked skipped with no rows, or has its time ratios on 1 and 2 cores (the report's table
+holding the CSV's medians) and both codes' front errors. Prints each problem and exits 1 if
 there is one.
 
 Usage: check_bench.py OUT [--quick] [--sizes N]   (the options bench.py ran with)"""
@@ -24,7 +26,8 @@ import bench_report  # noqa: E402
 COLUMNS = ["group", "case", "particles", "ranks", "steps", "metric", "median", "min", "max", "repeats", "unit"]
 SECTIONS = ["## Targets", "## 1. Throughput", "## 2. Where", "## 3. Floating", "## 4. Memory",
             "## 5. Parallel", "## 6. Snapshot", "## 7. Cost", "## 8. Single-phase", "## 9. Weak scaling",
-            "## What bounds"]
+            "## 10. Peer comparison", "## What bounds"]
+PEER_SKIPPED = "Skipped: no DualSPHysics binary was given."
 # Target verdicts: five, the efficiency target's when a scene has bench_report.EFF_MIN_FLUID
 # fluid particles (not at the quick sizes), and the cluster group's two when it ran on 8 ranks or
 # more at two rank counts (not at the quick sizes).
@@ -152,6 +155,25 @@ def throughput_problems(r, rows, md):
     return []
 
 
+def peer_problems(md, rows):
+    """The peer comparison: skipped with no rows, or per core count (1, 2) one time-ratio row
+    whose median the report's table shows, and a front-error row of each code."""
+    peer = [r for r in rows if r["group"] == "peer"]
+    if PEER_SKIPPED in md:
+        return ["performance.csv: %d peer rows, but the report says the comparison was skipped" % len(peer)] if peer else []
+    out = []
+    for cores in (1, 2):
+        ratio = [r for r in peer if r["metric"] == "mpsph_over_dualsphysics_time" and int(r["ranks"]) == cores]
+        m = re.search(r"^\| %d cores? \| [^|]+ \| \d+ \| [^|]+ \| \d+ \| (\S+) \[[^]]*\] \|$" % cores, md, re.M)
+        if len(ratio) != 1 or not m or abs(float(m.group(1)) / float(ratio[0]["median"]) - 1) > 5e-3:
+            out.append("peer comparison on %d cores: %d ratio rows, report row %s" % (
+                cores, len(ratio), m.group(1) if m else "missing"))
+    for code in ("dualsphysics", "mpsph"):
+        if not any(r["metric"] == "front_error_window_" + code for r in peer):
+            out.append("performance.csv: no front error of %s in the peer comparison" % code)
+    return out
+
+
 def report_problems(md, rows, cfg):
     """Sections, target verdicts and one row per benchmark in the report; the throughput table
     holds the CSV's particle-steps/s."""
@@ -174,7 +196,7 @@ def report_problems(md, rows, cfg):
     for what, pattern in rows_wanted:
         if not re.search(r"^\| %s \|" % pattern, md, re.M):
             out.append("performance.md: no table row for %s" % what)
-    return out
+    return out + peer_problems(md, rows)
 
 
 def main():

@@ -181,15 +181,26 @@ def dambreak_front(run, dx, column_width, reference):
         t, s = read_snapshot(path)
         ts.append(t * math.sqrt(2 * G / column_width))
         zs.append(front_position(s, dx) / column_width)
+    err, notes, t_exp, z_exp = front_error(ts, zs, reference)
+    return err, notes, {"t": np.array(ts), "z": np.array(zs), "t_ref": t_exp, "z_ref": z_exp}
+
+
+def front_error(ts, zs, reference, t_last=math.inf):
+    """RMS over the experimental points with T <= min(t_last, the series' last T) of
+    (Z_SPH - Z_exp) / Z_exp, the series (ts, zs: T and Z, T increasing) interpolated in T; with a
+    note naming the points, and the reference's T and Z columns. The error is nan when no point
+    falls in the window."""
     ref = read_reference(reference)
     t_exp = ref["T_t_sqrt_2g_over_a"].astype(float)
     z_exp = ref["Z_x_over_a"].astype(float)
-    use = t_exp <= max(ts)
+    use = t_exp <= min(max(ts), t_last)
+    if not use.any():
+        return math.nan, "no experimental point before T = %.2f" % min(max(ts), t_last), t_exp, z_exp
     z_sph = np.interp(t_exp[use], ts, zs)
     err = math.sqrt(np.mean(((z_sph - z_exp[use]) / z_exp[use]) ** 2))
     notes = "%d experimental points to T = %.2f; Z_SPH - Z_exp at the last: %+.2f" % (
         use.sum(), t_exp[use].max(), z_sph[-1] - z_exp[use][-1])
-    return err, notes, {"t": np.array(ts), "z": np.array(zs), "t_ref": t_exp, "z_ref": z_exp}
+    return err, notes, t_exp, z_exp
 
 
 # --- dam break: first impact on the right wall (Buchner 2002, P1) ---------------------------
