@@ -1,9 +1,9 @@
 /* engine_checks.c — the instability checks (exit status 2). After every RK stage: a non-finite
  * derivative, or a particle that moved farther within the step than the cell skin allows. After the first stage: a time step below time.dt_min. After every step, on the new
  * state: a particle outside the domain, deeper than SOLID_DEPTH_DX inside the solid of a wall, or
- * with a density outside its phase's band. The checks only read the state; each makes one pass
- * over the owned particles and one global reduction (none for the time step, which every rank
- * knows), so all ranks stop at the same step. */
+ * with a density outside its phase's band; then the energy check (energy_check.c). The checks only
+ * read the state; each makes one pass over the owned particles and one global reduction (none for
+ * the time step, which every rank knows), so all ranks stop at the same step. */
 #include <math.h>
 #include <stdio.h>
 #include "engine/engine.h"
@@ -88,7 +88,8 @@ static long first_bad_state(const struct engine *e, char *what, size_t len) {
 int engine_check_state(struct engine *e, long left_domain) {
   char what[160] = "left the domain";
   long bad = left_domain >= 0 ? left_domain : first_bad_state(e, what, sizeof what);
-  return stop_if_any(e, bad, what);
+  int status = stop_if_any(e, bad, what);
+  return status ? status : engine_check_energy(e);
 }
 
 /* The owned fluid particle with the largest acceleration over all ranks: its index on the rank
