@@ -183,6 +183,11 @@ int engine_check_dt(struct engine *e, const char *limit);
  *  else 0. Collective. */
 int engine_check_state(struct engine *e, long left_domain);
 
+/** The owned fluid particle with the largest |vec| over all ranks (vec: per-particle components,
+ *  e.g. the velocity or the acceleration): its index on the rank that holds it, -1 on the others;
+ *  the largest |vec| in *norm on every rank. Collective (one MAXLOC reduction). */
+long engine_largest_vector(const struct engine *e, double *const vec[3], double *norm);
+
 /** Whether the energy check runs: time.energy_growth > 0 and no wall moves. */
 int engine_energy_on(const struct engine *e);
 

@@ -83,22 +83,6 @@ void engine_energy_reference(struct engine *e) {
   e->energy_growth_peak = 0;
 }
 
-/* The owned fluid particle with the largest speed over all ranks: its index on the rank that
- * holds it, -1 on the others; the speed [m/s] in *u_max on every rank. */
-static long fastest_particle(const struct engine *e, double *u_max) {
-  struct { double u2; int rank; } local = {-1, e->rank}, global;
-  long best = -1;
-  for (long i = 0; i < e->p.n_owned; i++) {
-    if (!part_has(e->p.phase[i], KIND_INTEGRATED)) continue;
-    double u2 = 0;
-    for (int d = 0; d < e->p.dim; d++) u2 += e->p.v[d][i] * e->p.v[d][i];
-    if (u2 > local.u2) local.u2 = u2, best = i;
-  }
-  MPI_Allreduce(&local, &global, 1, MPI_DOUBLE_INT, MPI_MAXLOC, e->comm);
-  *u_max = sqrt(global.u2);
-  return global.rank == e->rank ? best : -1;
-}
-
 int engine_check_energy(struct engine *e) {
   if (!engine_energy_on(e)) return 0;
   int64_t sums[2];
@@ -107,7 +91,7 @@ int engine_check_energy(struct engine *e) {
   e->energy_growth_peak = fmax(e->energy_growth_peak, growth);
   if (!(growth > e->c->energy_growth) && isfinite(growth)) return 0;
   double u;
-  long i = fastest_particle(e, &u);
+  long i = engine_largest_vector(e, e->p.v, &u);
   char what[256];
   snprintf(what, sizeof what, "the mechanical energy grew by %.3g M U_max^2/2 since the start, above "
            "time.energy_growth %g; this particle is the fastest, %.3g m/s", growth,

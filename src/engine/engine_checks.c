@@ -92,26 +92,24 @@ int engine_check_state(struct engine *e, long left_domain) {
   return status ? status : engine_check_energy(e);
 }
 
-/* The owned fluid particle with the largest acceleration over all ranks: its index on the rank
- * that holds it (-1 on the others) and the acceleration [m/s^2] in *a_max on every rank. */
-static long largest_acceleration(const struct engine *e, double *a_max) {
+long engine_largest_vector(const struct engine *e, double *const vec[3], double *norm) {
   struct { double a2; int rank; } local = {-1, e->rank}, global;
   long best = -1;
   for (long i = 0; i < e->p.n_owned; i++) {
     if (!part_has(e->p.phase[i], KIND_INTEGRATED)) continue;
     double a2 = 0;
-    for (int d = 0; d < e->p.dim; d++) a2 += e->w.dv[d][i] * e->w.dv[d][i];
+    for (int d = 0; d < e->p.dim; d++) a2 += vec[d][i] * vec[d][i];
     if (a2 > local.a2) local.a2 = a2, best = i;
   }
   MPI_Allreduce(&local, &global, 1, MPI_DOUBLE_INT, MPI_MAXLOC, e->comm);
-  *a_max = sqrt(global.a2);
+  *norm = sqrt(global.a2);
   return global.rank == e->rank ? best : -1;
 }
 
 int engine_check_dt(struct engine *e, const char *limit) {
   if (e->dt >= e->c->dt_min && isfinite(e->dt)) return 0;
   double a_max;
-  long i = largest_acceleration(e, &a_max);
+  long i = engine_largest_vector(e, e->w.dv, &a_max);
   char what[256];
   snprintf(what, sizeof what, "time step %.3g s below time.dt_min %.3g s, set by the %s limit; "
            "this particle has the largest acceleration, %.3g m/s^2", e->dt, e->c->dt_min, limit,
