@@ -141,6 +141,8 @@ struct case_def {
   double t_end;              /* [s] */
   double cfl;                /* [-] */
   double dt_min;             /* a time step below this stops the run as unstable [s] */
+  double energy_growth;      /* growth of the mechanical energy [M U_max^2 / 2] that stops the run
+                                as unstable; 0 = no check */
   double output_interval;    /* snapshot interval [s]; 0 = first and last only */
   double stats_interval;     /* stats.csv interval [s] */
   double probes_interval;    /* probes.csv interval [s] */

@@ -96,6 +96,12 @@ struct engine {
   long probe_buf_len;
   int restarted;                   /* continues from a checkpoint */
   long wall_guard_hits;            /* normal-velocity corrections by the wall guard on this rank */
+  /* energy check (energy_check.c) */
+  double energy_unit;              /* the fixed-point unit of the energy sums [J] */
+  double energy_limit;             /* bound of one particle's energy in the sum [units] */
+  int64_t energy_start;            /* mechanical energy at the start of the run [units] */
+  double energy_scale;             /* M U_max^2 / 2 [units] */
+  double energy_growth_peak;       /* largest growth (E - E_start) / energy_scale so far [-] */
   /* scheme riemann (engine_step_dual.c) */
   double dt_acoustic;              /* the last acoustic sub-step [s] */
   long n_acoustic;                 /* acoustic sub-steps of the last advection step */
@@ -175,8 +181,26 @@ int engine_check_dt(struct engine *e, const char *limit);
 
 /** After a step, on the new state: stop (2 on every rank) if a particle left the domain
  *  (left_domain: its index on this rank, or -1), lies deeper than half a dx inside a wall's
- *  solid, or has a density outside its phase's density_band, else 0. Collective. */
+ *  solid, or has a density outside its phase's density_band, or engine_check_energy trips;
+ *  else 0. Collective. */
 int engine_check_state(struct engine *e, long left_domain);
+
+/** The owned fluid particle with the largest |vec| over all ranks (vec: per-particle components,
+ *  e.g. the velocity or the acceleration): its index on the rank that holds it, -1 on the others;
+ *  the largest |vec| in *norm on every rank. Collective (one MAXLOC reduction). */
+long engine_largest_vector(const struct engine *e, double *const vec[3], double *norm);
+
+/** Whether the energy check runs: time.energy_growth > 0 and no wall moves. */
+int engine_energy_on(const struct engine *e);
+
+/** At the start of the run (also after a restart): the mechanical energy the check compares with
+ *  (energy_check.c). Collective; nothing when the check is off. */
+void engine_energy_reference(struct engine *e);
+
+/** After a step, on the new state: stop (2 on every rank) if the mechanical energy of the fluid
+ *  has grown by more than time.energy_growth M U_max^2 / 2 since engine_energy_reference, naming
+ *  the fastest particle; else 0. One reduction when on, none when off. Collective. */
+int engine_check_energy(struct engine *e);
 
 /** Migrate, sort, rebuild the halo and the cell index after positions changed.
  *  Returns 0 or 2 (a particle left the domain or jumped beyond the neighbouring ranks). */

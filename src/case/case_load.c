@@ -89,6 +89,7 @@ static const struct rule R_H_OVER_DX = {"a number > 0 and <= 10", 0, 1, 10, 0};
 
 /* Default density bands [min, max] / rho0 of the instability check: a liquid, a gas. */
 static const double LIQUID_BAND[2] = {0.5, 2.0}, GAS_BAND[2] = {0.1, 10.0};
+#define ENERGY_GROWTH 1.0       /* default time.energy_growth [M U_max^2 / 2] */
 #define DT_MIN_FRACTION 1e-6   /* default time.dt_min / the acoustic step CFL h / max c0 */
 #define WALL_GUARD_DX 0.25     /* default physics.wall_guard [dx] */
 
@@ -1292,6 +1293,10 @@ static const struct case_key CASE_KEYS[] = {
     CASE_KEY("time", "dt_min", KEY_NUMBER, dt_min, .flags = KEY_LATE, .rule = &R_POSITIVE,
              .computed = dt_min_default, .def_doc = "10⁻⁶ · CFL · h / max c0",
              .doc = "a time step below this stops the run as unstable (status 2) [s]"),
+    CASE_KEY("time", "energy_growth", KEY_NUMBER, energy_growth, .rule = &R_NONNEGATIVE,
+             .def = {ENERGY_GROWTH}, .doc = "a growth of the fluid's mechanical energy beyond this "
+             "times M U_max²/2 stops the run as unstable (status 2; see below); `0`: off, for flows "
+             "that gain energy [-]"),
     CASE_KEY("output", "interval", KEY_NUMBER, output_interval, .rule = &R_NONNEGATIVE,
              .doc = "snapshot interval; `0`: the first and last snapshots only [s]"),
     CASE_KEY("output", "stats_interval", KEY_NUMBER, stats_interval, .rule = &R_POSITIVE,

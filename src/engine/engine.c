@@ -373,6 +373,7 @@ int engine_run(struct engine *e) {
   if (!e->restarted) engine_ghosts_now(e);   /* wall sensors and ghost pressures at t = 0 */
   int status = e->restarted ? 0 : engine_output(e, 1), signo = 0;
   long first_step = e->step;
+  if (!status) engine_energy_reference(e);
   double loop_start = MPI_Wtime(), cpu_start = process_cpu_seconds();
   e->next_progress = loop_start + e->c->progress_interval;
   while (!status && !signo && !engine_finished(e)) {

@@ -1,9 +1,9 @@
 /* engine_checks.c — the instability checks (exit status 2). After every RK stage: a non-finite
  * derivative, or a particle that moved farther within the step than the cell skin allows. After the first stage: a time step below time.dt_min. After every step, on the new
  * state: a particle outside the domain, deeper than SOLID_DEPTH_DX inside the solid of a wall, or
- * with a density outside its phase's band. The checks only read the state; each makes one pass
- * over the owned particles and one global reduction (none for the time step, which every rank
- * knows), so all ranks stop at the same step. */
+ * with a density outside its phase's band; then the energy check (energy_check.c). The checks only
+ * read the state; each makes one pass over the owned particles and one global reduction (none for
+ * the time step, which every rank knows), so all ranks stop at the same step. */
 #include <math.h>
 #include <stdio.h>
 #include "engine/engine.h"
@@ -88,29 +88,28 @@ static long first_bad_state(const struct engine *e, char *what, size_t len) {
 int engine_check_state(struct engine *e, long left_domain) {
   char what[160] = "left the domain";
   long bad = left_domain >= 0 ? left_domain : first_bad_state(e, what, sizeof what);
-  return stop_if_any(e, bad, what);
+  int status = stop_if_any(e, bad, what);
+  return status ? status : engine_check_energy(e);
 }
 
-/* The owned fluid particle with the largest acceleration over all ranks: its index on the rank
- * that holds it (-1 on the others) and the acceleration [m/s^2] in *a_max on every rank. */
-static long largest_acceleration(const struct engine *e, double *a_max) {
+long engine_largest_vector(const struct engine *e, double *const vec[3], double *norm) {
   struct { double a2; int rank; } local = {-1, e->rank}, global;
   long best = -1;
   for (long i = 0; i < e->p.n_owned; i++) {
     if (!part_has(e->p.phase[i], KIND_INTEGRATED)) continue;
     double a2 = 0;
-    for (int d = 0; d < e->p.dim; d++) a2 += e->w.dv[d][i] * e->w.dv[d][i];
+    for (int d = 0; d < e->p.dim; d++) a2 += vec[d][i] * vec[d][i];
     if (a2 > local.a2) local.a2 = a2, best = i;
   }
   MPI_Allreduce(&local, &global, 1, MPI_DOUBLE_INT, MPI_MAXLOC, e->comm);
-  *a_max = sqrt(global.a2);
+  *norm = sqrt(global.a2);
   return global.rank == e->rank ? best : -1;
 }
 
 int engine_check_dt(struct engine *e, const char *limit) {
   if (e->dt >= e->c->dt_min && isfinite(e->dt)) return 0;
   double a_max;
-  long i = largest_acceleration(e, &a_max);
+  long i = engine_largest_vector(e, e->w.dv, &a_max);
   char what[256];
   snprintf(what, sizeof what, "time step %.3g s below time.dt_min %.3g s, set by the %s limit; "
            "this particle has the largest acceleration, %.3g m/s^2", e->dt, e->c->dt_min, limit,

@@ -204,6 +204,9 @@ void engine_report(struct engine *e, long steps, double loop_seconds) {
     if (guard_hits)
       printf("  wall guard: %ld normal-velocity corrections of particles closing on a wall "
              "(stats.csv column wall_guard_hits)\n", guard_hits);
+    if (engine_energy_on(e))
+      printf("  energy check: largest growth of the mechanical energy %.3g M U_max^2/2 (stops "
+             "above time.energy_growth %g)\n", e->energy_growth_peak, e->c->energy_growth);
     write_timings(e, &s);
   }
   free(s.per_rank);
