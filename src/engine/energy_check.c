@@ -93,7 +93,7 @@ int engine_check_energy(struct engine *e) {
   double u;
   long i = engine_largest_vector(e, e->p.v, &u);
   char what[256];
-  snprintf(what, sizeof what, "the mechanical energy grew by %.3g M U_max^2/2 since the start, above "
+  snprintf(what, sizeof what, "the mechanical energy grew by %.4g M U_max^2/2 since the start, above "
            "time.energy_growth %g; this particle is the fastest, %.3g m/s", growth,
            e->c->energy_growth, u);
   if (i >= 0) engine_report_particle(e, i, what);
