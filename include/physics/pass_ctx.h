@@ -32,7 +32,8 @@ enum {
   FEAT_TRANSPORT_VELOCITY = 8192,  /* scheme riemann with a light phase: its transport-velocity shift */
   FEAT_DIFFUSION = 16384,  /* density diffusion (delta > 0); in delta-plus and delta-sph also the
                               renormalised density gradient it reads */
-  FEAT_VISCOSITY = 32768   /* artificial (alpha > 0) or laminar (a phase's viscosity > 0) viscosity */
+  FEAT_VISCOSITY = 32768,  /* artificial (alpha > 0) or laminar (a phase's viscosity > 0) viscosity */
+  FEAT_DAMPER_OWN_PHASE = 65536   /* the damper's D over the own phase and the walls (div_own) */
 };
 
 /** Work arrays of the scheme, sized to the particle capacity (those read at halo slots) or to
@@ -44,6 +45,8 @@ struct work {
   double *vol;                     /* particle volume m/rho of every slot, this stage [m^dim] */
   double *grad_rho[3];             /* renormalised density gradient [kg/m^4] */
   double *div;                     /* velocity divergence <div u> over all neighbours [1/s] */
+  double *div_own;                 /* FEAT_DAMPER_OWN_PHASE: <div u> over the neighbours of the own
+                                      phase and the walls, the D of the damper [1/s] */
   double *drho, *dv[3];            /* right-hand sides of the current stage */
   double *x0[3], *v0[3], *rho0;    /* state at the start of the step */
   double *sum_x[3], *sum_v[3], *sum_rho;   /* RK4 weighted sums of the stage derivatives */
