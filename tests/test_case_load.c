@@ -96,7 +96,7 @@ static void test_defaults(void) {
   CHECK(c.acoustic_damper == 10 && c.shifting == SHIFTING_CONSISTENT, "physics defaults");
   CHECK(c.u_max == c.phases[0].c0 / 10, "u_max default: liquid c0 / 10 (%g)", c.u_max);
   CHECK(c.tensile_control == 1 && c.free_surface == FREE_SURFACE_AUTO && c.surface_band == 2 &&
-        c.interface_mode == 4 && c.damper_form == DAMPER_SYMMETRIC && c.interface_sharpness == 0 &&
+        c.interface_mode == 4 && c.damper_form == DAMPER_OWN_PHASE && c.interface_sharpness == 0 &&
         c.limit_surface_shifting == 0 && c.potential_omega == 0 &&
         c.surface_tension == 0, "delta-plus defaults");
   CHECK(c.initial_pressure == INIT_PRESSURE_HYDROSTATIC, "initial pressure");

@@ -46,7 +46,8 @@ struct stage_op {
 enum { HF_POS = 1, HF_VEL = 2, HF_RHO = 4, HF_P = 8, HF_MASS = 16, HF_GRAD_RHO = 32, HF_SHIFT = 64,
        HF_DIV = 128, HF_SURFACE = 256, HF_INTERFACE_NORMAL = 512, HF_RHO_SHEPARD = 1024,
        HF_P_SHEPARD = 2048,
-       HF_GD = 4096 /* scheme generalized-dissipation: Shepard sum Gamma and <grad p>^L */ };
+       HF_GD = 4096 /* scheme generalized-dissipation: Shepard sum Gamma and <grad p>^L */,
+       HF_DIV_OWN = 8192 /* the damper's own-phase divergence */ };
 
 struct engine {
   const struct case_def *c;

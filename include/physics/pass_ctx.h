@@ -34,7 +34,8 @@ enum {
   FEAT_DIFFUSION = 16384,  /* density diffusion (delta > 0); in delta-plus and delta-sph also the
                               renormalised density gradient it reads */
   FEAT_VISCOSITY = 32768,  /* artificial (alpha > 0) or laminar (a phase's viscosity > 0) viscosity */
-  FEAT_BODIES = 65536      /* rigid bodies: the fluid's pair forces on their ghosts (body loads) */
+  FEAT_DAMPER_OWN_PHASE = 65536,  /* the damper's D over the own phase and the walls (div_own) */
+  FEAT_BODIES = 131072     /* rigid bodies: the fluid's pair forces on their ghosts (body loads) */
 };
 
 /** The force of one fluid particle's pair terms with the ghosts of one body: minus the particle's
@@ -62,6 +63,8 @@ struct work {
   double *vol;                     /* particle volume m/rho of every slot, this stage [m^dim] */
   double *grad_rho[3];             /* renormalised density gradient [kg/m^4] */
   double *div;                     /* velocity divergence <div u> over all neighbours [1/s] */
+  double *div_own;                 /* FEAT_DAMPER_OWN_PHASE: <div u> over the neighbours of the own
+                                      phase and the walls, the D of the damper [1/s] */
   double *drho, *dv[3];            /* right-hand sides of the current stage */
   double *x0[3], *v0[3], *rho0;    /* state at the start of the step */
   double *sum_x[3], *sum_v[3], *sum_rho;   /* RK4 weighted sums of the stage derivatives */

@@ -38,7 +38,7 @@ static const char *const INTERP_NAMES[] = {"shepard", "mls", NULL};
 static const char *const PRESSURE_NAMES[] = {"hydrostatic", "zero", NULL};
 static const char *const BOOL_NAMES[] = {"false", "true", NULL};
 static const char *const FREE_SURFACE_NAMES[] = {"auto", "on", "off", NULL};
-static const char *const DAMPER_NAMES[] = {"difference", "symmetric", NULL};
+static const char *const DAMPER_NAMES[] = {"difference", "symmetric", "own-phase", NULL};
 static const char *const IFACE_P_NAMES[] = {"sum", "density-weighted", NULL};
 static const char *const IFACE_VISC_NAMES[] = {"none", "harmonic", NULL};
 static const char *const SPC_MODEL_NAMES[] = {"present", "conventional", NULL};
@@ -1343,7 +1343,7 @@ static const struct case_key CASE_KEYS[] = {
     CASE_KEY("physics", "interface_mode", KEY_INTEGER, interface_mode, .rule = &R_MODE, .def = {4},
              .doc = "ε/φ/κ strategies of the shifting terms at interfaces and walls (see below)"),
     CASE_KEY("physics", "damper_form", KEY_CHOICE, damper_form, .names = DAMPER_NAMES,
-             .def = {DAMPER_SYMMETRIC}, .doc = "form of the acoustic damper term (see below)"),
+             .def = {DAMPER_OWN_PHASE}, .doc = "form of the acoustic damper term (see below)"),
     CASE_KEY("physics", "interface_sharpness", KEY_NUMBER, interface_sharpness, .rule = &R_NONNEGATIVE,
              .doc = "χ of the repulsive interface force between phases (paper 000 Eq. 20); `0`: off [-]"),
     CASE_KEY("physics", "limit_surface_shifting", KEY_BOOL, limit_surface_shifting,

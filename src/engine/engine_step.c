@@ -40,6 +40,7 @@ static int work_slots(struct work *w, int dim, struct work_slot *t) {
   }
   t[n++] = (struct work_slot){&w->vol, 1, 0};
   t[n++] = (struct work_slot){&w->div, 1, 0};
+  t[n++] = (struct work_slot){&w->div_own, 1, FEAT_DAMPER_OWN_PHASE};
   t[n++] = (struct work_slot){&w->surface, 1, FEAT_SURFACE};
   t[n++] = (struct work_slot){&w->region, 0, FEAT_SURFACE};
   t[n++] = (struct work_slot){&w->lambda, 0, FEAT_SURFACE};
@@ -65,7 +66,8 @@ static int optional_missing(const struct engine *e) {
          ((f & FEAT_SURFACE) && !e->w.surface) || ((f & FEAT_SHEPARD) && !e->w.rho_s) ||
          ((f & FEAT_SURFACE_TENSION) && !e->w.colour_grad) ||
          ((f & FEAT_SAME_PHASE_CONTINUITY) && !e->w.p_shepard) ||
-         ((f & FEAT_GENERALIZED_DISSIPATION) && !e->w.gd_gamma);
+         ((f & FEAT_GENERALIZED_DISSIPATION) && !e->w.gd_gamma) ||
+         ((f & FEAT_DAMPER_OWN_PHASE) && !e->w.div_own);
 }
 
 void engine_work_reserve(struct engine *e) {
@@ -112,6 +114,7 @@ static int halo_field_list(struct engine *e, int mask, double **f) {
   if (mask & HF_P) f[n++] = p->p;
   if (mask & HF_MASS) f[n++] = p->m;
   if (mask & HF_DIV) f[n++] = e->w.div;
+  if (mask & HF_DIV_OWN) f[n++] = e->w.div_own;
   if (mask & HF_SURFACE) f[n++] = e->w.surface;
   if (mask & HF_RHO_SHEPARD) f[n++] = e->w.rho_s;
   if (mask & HF_P_SHEPARD) f[n++] = e->w.p_shepard;
@@ -158,6 +161,7 @@ unsigned engine_option_terms(const struct engine *e) {
   if (c->shifting != SHIFTING_NONE) f |= FEAT_SHIFT;
   if (c->shifting == SHIFTING_CONSISTENT) f |= FEAT_DELTA_U;
   if (c->acoustic_damper > 0 && liquid) f |= FEAT_DAMPER;
+  if ((f & FEAT_DAMPER) && c->damper_form == DAMPER_OWN_PHASE) f |= FEAT_DAMPER_OWN_PHASE;
   if (c->free_surface != FREE_SURFACE_OFF && !e->no_free_surface && (c->tensile_control || (f & FEAT_SHIFT)))
     f |= FEAT_SURFACE;
   if (c->tensile_control) f |= FEAT_TIC;

@@ -18,7 +18,8 @@ static void gradients_and_rhs_ops(struct engine *e) {
                                      "gradients: renormalised density gradient, div u, shifting velocity"}};
   unsigned f = e->prm.features;
   engine_add_cell_pass(e, names[(f & FEAT_DIFFUSION) != 0][(f & FEAT_SHIFT) != 0], pass_gradients, 0);
-  int halo = ((f & FEAT_DIFFUSION) ? HF_GRAD_RHO : 0) | ((f & FEAT_SHIFT) ? HF_SHIFT : 0) | ((f & FEAT_DAMPER) ? HF_DIV : 0);
+  int damper_div = !(f & FEAT_DAMPER) ? 0 : (f & FEAT_DAMPER_OWN_PHASE) ? HF_DIV_OWN : HF_DIV;
+  int halo = ((f & FEAT_DIFFUSION) ? HF_GRAD_RHO : 0) | ((f & FEAT_SHIFT) ? HF_SHIFT : 0) | damper_div;
   if (halo) engine_add_op(e, "halo: gradient-pass results", NULL, halo, 0);
   engine_add_cell_pass(e, "fluid rhs: continuity and momentum", pass_fluid_rhs, 0);
 }

@@ -6,7 +6,8 @@
  *                   + 2(dim+2) sum_{j other fluid} mu_ij pi_ij gW_ij   (interface viscosity: harmonic)
  *                   - chi sum_{j other fluid} (|p_i| + |p_j|) gW_ij
  *                   + rho_i alpha2 c0 h sum_j (D~_j + D_i) gW_ij   (acoustic damper on liquids, symmetric
- *                        form; D~_j = D_j in the phase of i, 0 in other phases and walls)
+ *                        form; D~_j = D_j in the phase of i, 0 in other phases and walls; own-phase
+ *                        form: j in phase(i) or wall only, with D over those neighbours only)
  *                   + rho_i alpha2 c0 h sum_{j in phase(i)} (D_j - D_i) gW_ij   (difference form)
  *                   + rho_i (g - omega^2 (r_i - c))
  * with gW_ij = grad_i W_ij V_j = F_ij (r_i - r_j) V_j, D_i = sum_{j in phase(i)} psi_ij (-F_ij) V_j,
@@ -64,7 +65,9 @@ static inline __attribute__((always_inline)) void fluid_sums(const struct pass_c
   const double *restrict x[3] = {p->x[0], p->x[1], p->x[2]}, *restrict v[3] = {p->v[0], p->v[1], p->v[2]};
   const double *restrict du[3] = {w->du[0], w->du[1], w->du[2]};
   const double *restrict grad_rho[3] = {w->grad_rho[0], w->grad_rho[1], w->grad_rho[2]};
-  const double *restrict rho = p->rho, *restrict pres = p->p, *restrict vol = w->vol, *restrict div = w->div;
+  const double *restrict rho = p->rho, *restrict pres = p->p, *restrict vol = w->vol;
+  const double *restrict div = w->div_own ? w->div_own : w->div;   /* the damper's D */
+  const int damp_other = !w->div_own;   /* the damper's sum includes other-phase pairs */
   const double *restrict rho_d = diffused_density(ctx);   /* the density the diffusion acts on */
   const int *restrict phase = p->phase;
   const long i = ci->i;
@@ -119,7 +122,7 @@ static inline __attribute__((always_inline)) void fluid_sums(const struct pass_c
         for (int d = 0; d < dim; d++)
           s.mom_du[d] += iw->kappa * (rhoi * vi[d] * dui_g + rho[j] * v[d][j] * duj_g);
     }
-    if (DAMP == 1) {   /* symmetric form, D extended by zero outside the phase of i */
+    if (DAMP == 1 && (damp_other || rel != PAIR_OTHER)) {   /* symmetric forms, D~ = 0 outside the phase */
       double dsum = (rel == PAIR_SAME ? div[j] : 0.0) + div[i];
       for (int d = 0; d < dim; d++) s.damper[d] += dsum * fv * dx[d];
     }
@@ -179,7 +182,7 @@ static struct terms terms_of(const struct pass_ctx *ctx, const struct centre *ci
   struct terms t;
   t.du = (f & FEAT_DELTA_U) != 0;
   t.phases = ctx->c->n_phases == 1 ? 0 : (f & FEAT_SHARPNESS) ? 2 : 1;
-  t.damp = !(f & FEAT_DAMPER) ? 0 : ctx->c->damper_form == DAMPER_SYMMETRIC ? 1 : 2;
+  t.damp = !(f & FEAT_DAMPER) ? 0 : ctx->c->damper_form == DAMPER_DIFFERENCE ? 2 : 1;
   if (!ctx->c->phases[ci->phase].incompressible) t.damp = 0;
   t.diss = ((f & FEAT_VISCOSITY) ? 1 : 0) | ((f & FEAT_DIFFUSION) ? 2 : 0);
   return t;

@@ -7,6 +7,8 @@
  *    except with the density-weighted interface pressure for j of another phase,
  *    w_ij = 2 rho_j / (rho_i + rho_j), the continuity that matches its pair pressure 2 p_ij in the
  *    energy balance (doc/theory.md section 3);
+ *  - with the own-phase damper, the same divergence over the neighbours of the own phase and the
+ *    walls only, the D of the damper (equal to <div u> with one phase);
  *  - with shifting, sum_j grad_i W_ij V_j over all neighbours, turned into du (shifting.c). */
 #include <math.h>
 #include "physics/linalg.h"
@@ -30,7 +32,8 @@ static inline __attribute__((always_inline)) int gradients_of(struct pass_ctx *c
   const int ph = phase[i];
   const double support2 = ctx->prm->kern.support2, rhoi = rho[i], *restrict rho_state = p->rho;
   const int weighted = multi && ctx->c->interface_pressure == IFACE_P_DENSITY_WEIGHTED;
-  double xi[3], vi[3], mt[9] = {0}, g[3] = {0}, sum_gw[3] = {0}, div = 0, out[3];
+  double *restrict div_own = ctx->w->div_own;   /* NULL unless the own-phase damper is on */
+  double xi[3], vi[3], mt[9] = {0}, g[3] = {0}, sum_gw[3] = {0}, div = 0, div_ph = 0, out[3];
   for (int d = 0; d < dim; d++) {
     xi[d] = x[d][i];
     vi[d] = v[d][i];
@@ -50,6 +53,7 @@ static inline __attribute__((always_inline)) int gradients_of(struct pass_ctx *c
       div += fv * dvdx * 2.0 * rho_state[j] / (rho_state[i] + rho_state[j]);
     else
       div += fv * dvdx;
+    if (div_own && (phase[j] == ph || part_has(phase[j], KIND_BOUNDARY))) div_ph += fv * dvdx;
     n_nb++;
     if (shift)
       for (int d = 0; d < dim; d++) sum_gw[d] += fv * dx[d];
@@ -68,6 +72,7 @@ static inline __attribute__((always_inline)) int gradients_of(struct pass_ctx *c
     for (int d = 0; d < dim; d++) ctx->w->grad_rho[d][i] = fallback ? g[d] : out[d];
   }
   ctx->w->div[i] = div;
+  if (div_own) div_own[i] = div_ph;
   if (shift) shifting_velocity(ctx, i, sum_gw, n_nb);
   return fallback;
 }
@@ -85,6 +90,7 @@ static void clear_ghost(struct pass_ctx *ctx, long i, const struct neighbours *n
     if (ctx->w->du[d]) ctx->w->du[d][i] = 0;
   }
   ctx->w->div[i] = 0;
+  if (ctx->w->div_own) ctx->w->div_own[i] = 0;
 }
 
 #define GRADIENTS_OF(D, S, M) \
