@@ -122,8 +122,11 @@ fuzz:
 keys-doc: build/mpsph
 	@scripts/keys-doc
 
+# The builds run on every core (-j unless make was given one); the benchmark's programs too, so
+# that tests/bench_smoke.sh, which runs alone, does not compile them.
+TEST_JOBS = $(if $(filter -j%,$(MAKEFLAGS)),,-j$(shell nproc))
 test: deps
-	@$(MAKE) --no-print-directory all asan
+	@$(MAKE) --no-print-directory $(TEST_JOBS) all asan $(BENCH_TOOLS) build/bench/mpsph-single-phase
 	@PYTHON=$(PYTHON) scripts/run-tests
 
 # Two hosts on one machine (tests/multihost/multihost.sh: network namespaces, needs root, else it

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# test-cores: 1   (the refusals on 2 and 3 ranks stop at start-up)
 # Bad input: `run` stops with exit status 1 and a message naming the file, line and key (or the
 # numbers), before any computation, and the output folder is not created.
 set -u

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# test-alone: it measures speeds and the one-core peak
 # Smoke test of the benchmark driver (make bench): every benchmark group at the smallest quick
 # size, one repeat, into a temporary folder; tests/check_bench.py then checks that the CSV and
 # the report came out whole and sane (columns, finite numbers in each metric's range, a plausible

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# test-cores: 1
 # Command line: --help, --version and check succeed (check prints the counts and the memory
 # estimate); a bad command line exits with status 1 and the usage. Bad case files:
 # tests/bad_input.sh.

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# test-cores: 3
 # Output faults (issue 20). Every run is under `timeout`, so that a hang fails the test.
 #  1. A full disk (a small tmpfs) while writing a snapshot, a checkpoint, and a stats.csv or
 #     probes.csv row, each on 1 and 2 ranks: every rank ends with status 3, the message names the

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# test-cores: 1
 # The inputs on which `make fuzz` found a crash, undefined behaviour or a broken contract, all
 # fixed: each goes through the fuzz target (build/tests/fuzz_replay, built with the address and
 # undefined-behaviour sanitizers) and through `mpsph check` with the input's "#set" lines as --set

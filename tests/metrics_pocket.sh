@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# test-cores: 1
 # The air-pocket period metric of the validation (scripts/validation/metrics.py) on analytic input.
 set -eu
 cd "$(dirname "$0")/.."

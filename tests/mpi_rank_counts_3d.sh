@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# test-cores: 16
 # 3D two-phase with walls on many rank counts: the coarse 3D water-air dam break
 # (tests/cases/dambreak-3d-2phase.yaml, 1440 fluid + 5712 wall particles on 6 x 4 x 3 cells; some
 # particles change cells within the run) for 20 steps gives bitwise-identical particle data

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# test-cores: 3
 # The single-phase dam break (2D, 300 steps), a coarse 3D hydrostatic box (40 steps), the
 # two-phase dam break with every delta-plus term (100 steps), a tank shaken by a prescribed
 # wall motion (150 steps), and the two-phase dam break with scheme riemann (60 steps), under

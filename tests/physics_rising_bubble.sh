@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# test-cores: 1
 # Rising bubble (cases/rising-bubble-hysing, Hysing et al. 2009 test case 1: buoyancy, viscosity of
 # both phases and surface tension together) at R/dx = 10 to t = 1, through the acceleration and the
 # peak of the rise: the bubble's mean rise velocity stays within 5 % of the peak of the benchmark's

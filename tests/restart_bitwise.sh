@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# test-cores: 3
 # Restart: a coarse two-phase dam break run for 120 steps on 2 ranks, and the same run stopped
 # at step 60 and continued with --restart on 2 ranks and on 3 ranks (with forced
 # re-partitions), end in bitwise-identical particle data, and so do their checkpoints (also with

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# test-cores: 4   (4 restarts at once, mostly waiting)
 # Damaged checkpoints: copies of a valid checkpoint, each with one damage made by
 # tests/damage_checkpoint.py (a header number, a /run number, the snapshot series, one field of
 # one particle row, a dataset of the wrong length, a truncated file), are refused by --restart on

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# test-cores: 3
 # kill -9 in the middle of a write (the test hook MPSPH_TEST_ABORT_IN_WRITE=NAME kills every
 # rank by SIGKILL while NAME.tmp is being written) leaves the files written before complete:
 #  1. a run with periodic checkpoints (output.checkpoint_interval) killed while writing a

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# test-cores: 3
 # Stop signals: SIGTERM sent to the ranks (what Slurm and srun deliver) and SIGUSR1 sent to
 # mpirun (Open MPI forwards it; on SIGTERM it kills the ranks after 1 s) stop a run at the
 # same step on every rank with status 0 and a complete checkpoint.h5, written no snapshot of

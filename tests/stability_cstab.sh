@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# test-cores: 1
 # Stability scene 1 (doc/stability.md): a closed water-air dam break, density ratio 1000, the
 # physical air sound speed 340 m/s beside c0w = 28 m/s = 10 x 2 sqrt(gH). The c_stab limit of the
 # time step (14.1 c0w = 396 m/s > 340 m/s) binds at every step; asserted from stats.csv written

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# test-cores: 1
 # Stability scene 3 (doc/stability.md): a violent impact. A water block (0.14 m x 0.1 m, c0w =
 # 60 m/s) moving at 6 m/s onto a vertical wall through a thin air layer (3 dx) in a closed
 # air-filled tank (paper 000 section 3.3 spirit), to 0.03 s.

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# test-cores: 1
 # Stability scene 2 (doc/stability.md): entrapped air. A water column (0.3 m, free surface on top)
 # falls at 1 m/s onto a closed air layer (0.1 m, 5 rows) at the bottom of a narrow tank: the air
 # is compressed (pressure up to about 16 times its initial value) and re-expands below its

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# test-cores: 1
 # Stability scene 6b (doc/stability.md): density ratio 10000, water (1000, c0 14 m/s) under a gas
 # of 0.1 kg/m^3 (c0 340 m/s) at rest, to t = 0.3 s. c_stab = 44.7 c0w = 626 m/s binds the time
 # step (asserted at every step). Exit 0, layers kept (overlap at most 3 dx), masses bitwise

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# test-cores: 1
 # Stability scene 4 (doc/stability.md): long-time rest. The two-phase hydrostatic tank of paper
 # 000 section 3.1 (water 1 m under air 1 m, c0w = 10 sqrt(g Hw), c0a = 340 m/s) at Hw/dx = 10, to
 # t sqrt(g/Hw) = 5 (the paper's 40 does not fit in a test; doc/stability.md has the command of

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# test-cores: 1
 # Stability scene 5 (doc/stability.md): isolated water particles (four single particles and a 2x2
 # drop) thrown at 4-5 m/s through air at rest (density ratio 1000, c0a = 340 m/s) into the walls
 # of a closed tank: the same-phase renormalisation falls back to the identity and shifting is off

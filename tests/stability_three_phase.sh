@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# test-cores: 1
 # Stability scene 6a (doc/stability.md): a three-phase column at rest, oil (846) over water (1000)
 # with air (1, c0 = 340 m/s) above, 6 rows each (paper 000 section 3.5 layers, with air), to
 # t = 0.5 s (t sqrt(g/H) = 2.9 with H = 0.3 m). Exit 0, layers kept (each interface's overlap at

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# test-cores: 1
 # make validate's machinery on its cheapest rungs: scripts/validate.py runs the coarsest rung of
 # the one-fluid oscillating drop (R/dx = 12.5) and of the standing wave, computes their errors
 # and writes the report. Asserts the report, its CSV and plots exist with a row per study, and
