@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# test-cores: 3
 # Rigid bodies (doc/theory.md section 5b): free fall in 2D and 3D exact to round-off; a box held
 # under water carries the buoyancy rho g A and no torque (1 %); a floating box moving in the flow
 # gives the same bodies.csv and particles on 1, 2 and 3 ranks, and across a restart.
