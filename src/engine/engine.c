@@ -289,7 +289,10 @@ int engine_init(struct engine *e, const struct case_def *c, const char *outdir,
   e->t_repartition = 0;
   engine_print_pipeline(e);
   /* not before: bad input found in the set-up creates no folder */
-  return lock_output(e) ? 1 : engine_open_output(e);
+  if (lock_output(e)) return 1;
+  status = engine_open_output(e);
+  if (!status) engine_energy_reference(e);   /* the energy check's reference: the state it starts from */
+  return status;
 }
 
 /* Free the free-surface work arrays (region, flags, eigenvalues, normals) and clear them. */
@@ -373,7 +376,6 @@ int engine_run(struct engine *e) {
   if (!e->restarted) engine_ghosts_now(e);   /* wall sensors and ghost pressures at t = 0 */
   int status = e->restarted ? 0 : engine_output(e, 1), signo = 0;
   long first_step = e->step;
-  if (!status) engine_energy_reference(e);
   double loop_start = MPI_Wtime(), cpu_start = process_cpu_seconds();
   e->next_progress = loop_start + e->c->progress_interval;
   while (!status && !signo && !engine_finished(e)) {
