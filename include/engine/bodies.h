@@ -23,7 +23,7 @@ struct body_run {
   double force[3], torque[3];        /* the fluid's on the body at the last evaluation [N], [N m]
                                         (about the centre of mass; 2D: per metre, torque[2]) */
   double acc[3], ang_acc[3];         /* accelerations at the last evaluation [m/s^2], [rad/s^2] */
-  char names[BODY_NUMBERS][24];      /* the checkpoint's names of its numbers */
+  char names[BODY_NUMBERS][48];      /* the checkpoint's names of its numbers */
 };
 
 /** The bodies of a run and the loads of the current stage. */
