@@ -627,7 +627,7 @@ static void test_motion_table(void) {
 }
 
 /* Rigid bodies: the defaults from the shape, the degrees of freedom, the round trip (2D and 3D)
- * and the refusals. */
+ * and the refusals; prescribed degrees of freedom beside free ones. */
 static void test_bodies(void) {
   const char *body2 = "walls: [{box: {min: [0, 0], max: [1, 1]}}, {box: {min: [0.2, 0.4], max: [0.6, 0.6]}, "
                       "fluid_side: outside, body: {mass: 12, velocity: [0, -1], fixed: [x, rotation]}}]";
@@ -647,9 +647,32 @@ static void test_bodies(void) {
       {"walls: [{box: {min: [0, 0], max: [1, 1]}, body: {fixed: [x]}}]", "walls.0.body.mass: missing required key",
        "a number > 0"},
       {"walls: [{box: {min: [0, 0], max: [1, 1]}, body: {mass: 1}, motion: {translation: {amplitude: [0.01, 0], "
-       "period: 1}}}]", "walls.0.motion: got a motion and a body", "one of them"}};
+       "period: 1}}}]", "walls.0.motion: got a motion and a body without body.prescribed", "to name the degrees"},
+      {"walls: [{box: {min: [0, 0], max: [1, 1]}, body: {mass: 1, prescribed: [y]}}]",
+       "walls.0.body: got prescribed degrees of freedom and no motion", "walls.N.motion"},
+      {"walls: [{box: {min: [0, 0], max: [1, 1]}, body: {mass: 1, fixed: [y], prescribed: [y]}, motion: "
+       "{translation: {amplitude: [0, 0.1], period: 1}}}]", "walls.0.body: got a degree of freedom both fixed and "
+       "prescribed", "each in one list"},
+      {"walls: [{box: {min: [0, 0], max: [1, 1]}, body: {mass: 1, prescribed: [y]}, motion: "
+       "{translation: {amplitude: [0.1, 0.1], period: 1}}}]", "walls.0.motion: moves a degree of freedom the body does "
+       "not prescribe", "to be zero"},
+      {"walls: [{box: {min: [0, 0], max: [1, 1]}, body: {mass: 1, prescribed: [rotation]}, motion: "
+       "{rotation: {amplitude: 0.1, period: 1, centre: [0, 0]}}}]", "walls.0.motion: turns about (0, 0, 0)",
+       "the body's centre of mass (0.5, 0.5, 0)"}};
   for (size_t k = 0; k < sizeof refused / sizeof refused[0]; k++)
     expect_error(variant(13, refused[k][0]), 0, NULL, refused[k][1], refused[k][2]);
+  const char *heave = "walls: [{box: {min: [0, 0], max: [1, 1]}, body: {mass: 1, prescribed: [y, rotation]}, "
+                      "motion: {table: [[0, 0, 0, 0], [1, 0, 0.1, 0.2]], centre: [0.5, 0.5]}}]";
+  CHECK(load(variant(13, heave), 0, NULL, &c) == 0, "prescribed heave and roll load: %s", err);
+  CHECK(c.walls[0].body.prescribed == (BODY_DOF_Y | BODY_DOF_RZ) && c.walls[0].motion.n_rows == 2,
+        "y and rotation follow the table");
+  round_trip(variant(13, heave));
+  const char *spin = "walls: [{box: {min: [0, 0, 0], max: [1, 1, 1]}, body: {mass: 1, prescribed: [rx, ry, rz]}, "
+                     "motion: {rotation: {amplitude: 0.1, period: 1, centre: [0.5, 0.5, 0.5], axis: [1, 1, 0]}}}]";
+  round_trip(case_3d(spin));
+  expect_error(case_3d("walls: [{box: {min: [0, 0, 0], max: [1, 1, 1]}, body: {mass: 1, prescribed: [rx]}, "
+                       "motion: {rotation: {amplitude: 0.1, period: 1, centre: [0.5, 0.5, 0.5], axis: [1, 0, 0]}}}]"),
+               0, NULL, "walls.0.body: got some of a 3D body's rotations prescribed", "rx, ry and rz together");
 }
 
 int main(void) {

@@ -211,6 +211,39 @@ static void test_rigid_rates(void) {
         rate[RB_Q + 2], rate[RB_Q + 3]);
 }
 
+/* A 3D body prescribing z and its three rotations from a wall motion (a heave and a rotation about
+ * [1, 2, 2] through its centre of mass) and free along x and y: its frame moves every body point
+ * as the motion's own frame does, with the same velocity and acceleration, while x keeps its
+ * state. */
+static void test_rigid_prescribe(void) {
+  struct body b = {.active = 1, .mass = 1, .centre = {0.1, 0.2, 0.3}, .inertia = {1, 1, 1},
+                   .prescribed = BODY_DOF_Z | BODY_DOF_RX | BODY_DOF_RY | BODY_DOF_RZ};
+  struct wall_motion m = {.translation = {.active = 1, .amplitude = {0, 0, 0.05}, .period = 0.8},
+                          .rotation = {.active = 1, .amplitude = {0.3}, .period = 1.1},
+                          .centre = {0.1, 0.2, 0.3}, .axis = {1, 2, 2}};
+  double y[RB_STATE], rate[RB_STATE], acc[3] = {0}, alpha[3] = {0};
+  struct frame law, f;
+  rigid_initial(&b, y);
+  y[RB_X] = 0.4, y[RB_V] = -1;
+  motion_frame(&m, 0.37, &law);
+  rigid_prescribe(&b, 3, &law, y, rate, acc, alpha);
+  rigid_frame(&b, 3, y, acc, alpha, &f);
+  double x_ref[3] = {0.5, -0.1, 0.9}, x_law[3], x_body[3], u_law[3], u_body[3], a_law[3], a_body[3];
+  frame_position(&law, 3, x_ref, x_law);
+  frame_velocity(&law, 3, x_law, u_law);
+  frame_acceleration(&law, 3, x_law, a_law);
+  x_law[0] += 0.4 - 0.1;   /* the free x of the body moved it by 0.3 m */
+  frame_position(&f, 3, x_ref, x_body);
+  frame_velocity(&f, 3, x_body, u_body);
+  frame_acceleration(&f, 3, x_body, a_body);
+  for (int d = 0; d < 3; d++) {
+    CHECK_CLOSE(x_body[d], x_law[d], 1e-15, "prescribed: the body point where the law puts it");
+    CHECK_CLOSE(u_body[d], u_law[d] + (d == 0 ? -1 : 0), 1e-14, "prescribed: its velocity (and the free vx)");
+    CHECK_CLOSE(a_body[d], a_law[d], 1e-14, "prescribed: its acceleration");
+  }
+  CHECK(y[RB_X] == 0.4 && y[RB_V] == -1 && rate[RB_V + 2] == law.a[2], "free x kept, z' from the law");
+}
+
 /* The frame of a 3D body turned 0.7 rad about [1, 2, 2]/3 and spinning at w: it turns a body point
  * about the centre of mass by that rotation, and its velocity and acceleration are v + w x r and
  * a + alpha x r + w x (w x r). */
@@ -297,6 +330,7 @@ int main(void) {
   test_table();
   test_axis_3d();
   test_rigid_rates();
+  test_rigid_prescribe();
   test_rigid_frame();
   test_mass_properties();
   return check_report("test_motion");

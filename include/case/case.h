@@ -96,6 +96,8 @@ struct body {
   double velocity[3];           /* initial velocity of the centre of mass [m/s] */
   double angular_velocity[3];   /* initial angular velocity (2D: [2], about z) [rad/s] */
   unsigned fixed;               /* BODY_DOF_* held at their initial velocity */
+  unsigned prescribed;          /* BODY_DOF_* that follow the wall's motion law (struct wall's
+                                   motion; a rotation about the centre of mass) */
 };
 
 /** A wall: layers of fixed ghost particles along the boundary of a shape. */

@@ -55,8 +55,9 @@ void bodies_evaluate(struct engine *e);
 void bodies_save(struct engine *e);
 
 /** The Runge-Kutta update of stage s with weight ws: the next stage state y0 + step rate, or at
- *  the last stage the step's end y0 + step sum (the quaternion scaled back to unit length). */
-void bodies_rk_update(struct engine *e, int s, double ws, double step, int last);
+ *  the last stage the step's end y0 + step sum (the quaternion scaled back to unit length); the
+ *  prescribed degrees of freedom are then set from their law at that state's time t_next [s]. */
+void bodies_rk_update(struct engine *e, int s, double ws, double step, int last, double t_next);
 
 /** The bodies.csv header and one row (step, time, then per body its state, force and torque). */
 void bodies_csv_header(const struct engine *e, FILE *f);

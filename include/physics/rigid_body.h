@@ -24,6 +24,15 @@ void rigid_initial(const struct body *b, double *state);
 void rigid_rates(const struct body *b, int dim, const double *state, const double *force,
                  const double *torque, const double *gravity, double *rate, double *acc, double *ang_acc);
 
+/** Impose on body b's state the degrees of freedom it prescribes (struct body's prescribed) from
+ *  the frame law of its wall's motion at the state's time: position and velocity of the centre
+ *  of mass (its place at t = 0 plus the law's displacement), 2D angle and angular velocity, 3D
+ *  quaternion and angular velocity (all three rotations prescribed together: the law's angle
+ *  about its axis), and their accelerations into acc [m/s^2] and ang_acc [rad/s^2]; with rate
+ *  not NULL also their rates (over what rigid_rates wrote). */
+void rigid_prescribe(const struct body *b, int dim, const struct frame *law, double *state, double *rate,
+                     double *acc, double *ang_acc);
+
 /** Scale the quaternion of a 3D state back to unit length (the Runge-Kutta update does not keep
  *  it); nothing in 2D. */
 void rigid_normalise(int dim, double *state);

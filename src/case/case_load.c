@@ -53,8 +53,9 @@ static const char *const FLUID_KEYS[] = {"phase", "box", "circle", "polygon", "v
                                          "velocity_gradient", "velocity_mode", NULL};
 static const char *const MODE_KEYS[] = {"amplitude", "wavelength", "interface", NULL};
 static const char *const WALL_KEYS[] = {"box", "circle", "polygon", "slip", "fluid_side", "motion", "body", NULL};
-static const char *const BODY_KEYS[] = {"mass", "centre", "inertia", "velocity", "angular_velocity", "fixed", NULL};
-/* The degrees of freedom a body's `fixed` may name, in the order of the BODY_DOF_* bits, per
+static const char *const BODY_KEYS[] = {"mass", "centre", "inertia", "velocity", "angular_velocity", "fixed",
+                                        "prescribed", NULL};
+/* The degrees of freedom a body's `fixed` and `prescribed` may name, in the order of the BODY_DOF_* bits, per
  * dimension. */
 static const char *const DOF_NAMES_2D[] = {"x", "y", "", "", "", "rotation", NULL};
 static const char *const DOF_NAMES_3D[] = {"x", "y", "z", "rx", "ry", "rz", NULL};
@@ -731,24 +732,70 @@ static int read_motion(const struct map *wall, struct wall *w) {
          read_axis(&rotation, &w->motion) || check_motion_start(&m, &w->motion);
 }
 
-/* The degrees of freedom a body holds: a list of names from the dimension's DOF names. */
-static int read_fixed(const struct map *m, unsigned *fixed) {
+/* A list of a body's degrees of freedom under key (names from the dimension's DOF names) as
+ * BODY_DOF_* bits. */
+static int read_dofs(const struct map *m, const char *key, unsigned *dofs) {
   char path[PATH_LEN], ipath[PATH_LEN], names[LIST_LEN] = "", expected[LIST_LEN + 32];
   const char *const *dof = m->ld->dim == 2 ? DOF_NAMES_2D : DOF_NAMES_3D;
   const struct ynode *seq;
   for (int k = 0; dof[k]; k++)
     if (dof[k][0]) snprintf(names + strlen(names), sizeof names - strlen(names), "%s%s", names[0] ? ", " : "", dof[k]);
   snprintf(expected, sizeof expected, "a degree of freedom: %s", names);
-  *fixed = 0;
-  if (list(m, "fixed", 0, 6, "degrees of freedom", &seq, path)) return 1;
+  *dofs = 0;
+  if (list(m, key, 0, 6, "degrees of freedom", &seq, path)) return 1;
   for (int i = 0; seq && i < seq->n; i++) {
     const struct ynode *v = seq->entries[i].value;
     int k = 0;
     while (dof[k] && !(v->kind == YNODE_SCALAR && dof[k][0] && strcmp(v->text, dof[k]) == 0)) k++;
     join_index(ipath, path, i);
     if (!dof[k]) return fail_got(m->ld, v, ipath, expected);
-    *fixed |= 1u << k;
+    *dofs |= 1u << k;
   }
+  return 0;
+}
+
+/* The degrees of freedom motion m moves (BODY_DOF_* bits): a translation component of nonzero
+ * amplitude or table column, and the rotations (all three in 3D) of a rotation law or a table's
+ * nonzero angle column. */
+static unsigned motion_dofs(const struct wall_motion *m, int dim) {
+  unsigned dofs = 0;
+  for (int c = 0; c < 4; c++) {
+    int moves = c < 3 ? m->translation.active && m->translation.amplitude[c] != 0 : m->rotation.active;
+    for (int row = 0; row < m->n_rows; row++) moves |= m->table[row][1 + c] != 0;
+    if (moves) dofs |= c < 3 ? BODY_DOF_X << c : dim == 2 ? BODY_DOF_RZ : BODY_DOF_RX | BODY_DOF_RY | BODY_DOF_RZ;
+  }
+  return dofs;
+}
+
+/* A body's prescribed degrees of freedom: a wall motion for them and no other, none of them
+ * fixed, a 3D body's rotations all prescribed or none, and a prescribed rotation about the body's
+ * centre of mass. */
+static int check_prescribed(const struct map *wall, const struct map *m, const struct wall *w) {
+  const struct body *b = &w->body;
+  const unsigned rotations = BODY_DOF_RX | BODY_DOF_RY | BODY_DOF_RZ, turning = b->prescribed & rotations;
+  char path[PATH_LEN];
+  const struct ynode *motion = get(wall, "motion", path);
+  if (!motion && b->prescribed)
+    return fail(m->ld, m->node, m->path, "got prescribed degrees of freedom and no motion, expected "
+                "walls.N.motion giving their law");
+  if (!motion) return 0;
+  if (!b->prescribed)
+    return fail(m->ld, motion, path, "got a motion and a body without body.prescribed, expected body.prescribed "
+                "to name the degrees of freedom the motion sets (a body's others move as the flow drives them)");
+  if (b->prescribed & b->fixed)
+    return fail(m->ld, m->node, m->path, "got a degree of freedom both fixed and prescribed, expected each in one list");
+  if (m->ld->dim == 3 && turning && turning != rotations)
+    return fail(m->ld, m->node, m->path, "got some of a 3D body's rotations prescribed, expected rx, ry and rz "
+                "together or none of them");
+  if (motion_dofs(&w->motion, m->ld->dim) & ~b->prescribed)
+    return fail(m->ld, motion, path, "moves a degree of freedom the body does not prescribe, expected the "
+                "motion's other translations, and its rotation unless prescribed, to be zero");
+  double off = 0;
+  for (int d = 0; d < m->ld->dim; d++) off += fabs(w->motion.centre[d] - b->centre[d]);
+  if (turning && off > 1e-12 * (1 + fabs(b->centre[0]) + fabs(b->centre[1]) + fabs(b->centre[2])))
+    return fail(m->ld, motion, path, "turns about (%g, %g, %g), expected the body's centre of mass (%g, %g, %g): "
+                "a prescribed rotation turns the body about it", w->motion.centre[0], w->motion.centre[1],
+                w->motion.centre[2], b->centre[0], b->centre[1], b->centre[2]);
   return 0;
 }
 
@@ -764,20 +811,17 @@ static int per_rotation(const struct map *m, const char *key, const struct rule 
 static int read_body(const struct map *wall, struct wall *w) {
   struct map m;
   struct body *b = &w->body;
-  char path[PATH_LEN];
   if (sub(wall, "body", BODY_KEYS, &m)) return 1;
   b->active = m.node != NULL;
   if (!b->active) return 0;
-  if (w->moving)
-    return fail(m.ld, get(wall, "motion", path), path, "got a motion and a body, expected one of them: a "
-                "body moves as the flow drives it");
   double per_mass[3];
   shape_mass_properties(&w->shape, m.ld->dim, b->centre, per_mass);
   if (num(&m, "mass", &R_POSITIVE, REQUIRED, &b->mass)) return 1;
   for (int d = 0; d < 3; d++) b->inertia[d] = b->mass * per_mass[d];
   if (vec(&m, "centre", 0, b->centre) || per_rotation(&m, "inertia", &R_POSITIVE, b->inertia) ||
       vec(&m, "velocity", 0, b->velocity) || per_rotation(&m, "angular_velocity", &R_ANY, b->angular_velocity) ||
-      read_fixed(&m, &b->fixed))
+      read_dofs(&m, "fixed", &b->fixed) || read_dofs(&m, "prescribed", &b->prescribed) ||
+      check_prescribed(wall, &m, w))
     return 1;
   for (int d = 0; d < 3; d++)
     if (!(b->inertia[d] > 0) && (m.ld->dim == 3 || d == 2))
@@ -1046,18 +1090,24 @@ static void put_per_rotation(FILE *f, const char *key, const double *v, int dim)
   else put_num(f, "      ", key, v[2]);
 }
 
-static void put_body(FILE *f, const struct body *b, int dim) {
+/* A list of degrees of freedom (BODY_DOF_* bits dofs) under key. */
+static void put_dofs(FILE *f, const char *key, unsigned dofs, int dim) {
   const char *const *dof = dim == 2 ? DOF_NAMES_2D : DOF_NAMES_3D;
+  fprintf(f, "      %s: [", key);
+  for (int k = 0, n = 0; dof[k]; k++)
+    if (dofs & (1u << k)) fprintf(f, "%s%s", n++ ? ", " : "", dof[k]);
+  fputs("]\n", f);
+}
+
+static void put_body(FILE *f, const struct body *b, int dim) {
   fputs("    body:\n", f);
   put_num(f, "      ", "mass", b->mass);
   put_vec(f, "      ", "centre", b->centre, dim);
   put_per_rotation(f, "inertia", b->inertia, dim);
   put_vec(f, "      ", "velocity", b->velocity, dim);
   put_per_rotation(f, "angular_velocity", b->angular_velocity, dim);
-  fputs("      fixed: [", f);
-  for (int k = 0, n = 0; dof[k]; k++)
-    if (b->fixed & (1u << k)) fprintf(f, "%s%s", n++ ? ", " : "", dof[k]);
-  fputs("]\n", f);
+  put_dofs(f, "fixed", b->fixed, dim);
+  put_dofs(f, "prescribed", b->prescribed, dim);
 }
 
 /* Fluid region i (the list's own writer). */
@@ -1082,7 +1132,7 @@ static void put_wall(FILE *f, const struct case_def *c, int i) {
   put_word(f, "    ", "slip", SLIP_NAMES[w->slip]);
   put_word(f, "    ", "fluid_side", SIDE_NAMES[w->fluid_side]);
   if (w->body.active) put_body(f, &w->body, c->dimension);
-  else if (w->moving) put_motion(f, &w->motion, c->dimension);
+  if (w->moving && (!w->body.active || w->body.prescribed)) put_motion(f, &w->motion, c->dimension);
 }
 
 /* Probe i (the list's own writer): its name, kind and the keys of its kind. */

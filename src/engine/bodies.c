@@ -6,6 +6,16 @@
 #include "engine/engine.h"
 #include "base/mem.h"
 
+/* Impose the prescribed degrees of freedom of body r at time t [s] on its state (and, with rates,
+ * on its rates and accelerations); nothing for a body that prescribes none. */
+static void prescribe(const struct engine *e, struct body_run *r, double t, int rates) {
+  const struct wall *w = &e->c->walls[r->wall];
+  if (!w->body.prescribed) return;
+  struct frame law;
+  motion_frame(&w->motion, t, &law);
+  rigid_prescribe(&w->body, e->c->dimension, &law, r->y, rates ? r->rate : NULL, r->acc, r->ang_acc);
+}
+
 void bodies_init(struct engine *e) {
   struct bodies *B = &e->bodies;
   memset(B, 0, sizeof *B);
@@ -16,6 +26,7 @@ void bodies_init(struct engine *e) {
     struct body_run *r = &B->run[B->n++];
     r->wall = w;
     rigid_initial(b, r->y);
+    prescribe(e, r, e->time, 0);
     memcpy(r->y0, r->y, sizeof r->y);
     e->prm.body_walls |= 1u << w;
   }
@@ -86,6 +97,7 @@ void bodies_evaluate(struct engine *e) {
     first = end;
     rigid_rates(&e->c->walls[r->wall].body, e->p.dim, r->y, r->force, r->torque, e->c->gravity, r->rate, r->acc,
                 r->ang_acc);
+    prescribe(e, r, e->stage_time, 1);
   }
 }
 
@@ -93,7 +105,7 @@ void bodies_save(struct engine *e) {
   for (int k = 0; k < e->bodies.n; k++) memcpy(e->bodies.run[k].y0, e->bodies.run[k].y, sizeof e->bodies.run[k].y);
 }
 
-void bodies_rk_update(struct engine *e, int s, double ws, double step, int last) {
+void bodies_rk_update(struct engine *e, int s, double ws, double step, int last, double t_next) {
   for (int k = 0; k < e->bodies.n; k++) {
     struct body_run *r = &e->bodies.run[k];
     for (int j = 0; j < RB_STATE; j++) {
@@ -101,6 +113,7 @@ void bodies_rk_update(struct engine *e, int s, double ws, double step, int last)
       r->y[j] = r->y0[j] + step * (!last ? r->rate[j] : r->sum[j]);
     }
     if (last) rigid_normalise(e->p.dim, r->y);
+    prescribe(e, r, t_next, 0);
   }
 }
 

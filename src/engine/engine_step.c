@@ -527,8 +527,9 @@ static void rk_update(struct engine *e, const struct rk_scheme *rk, int s, const
     p->p[i] = eos_pressure(&e->c->phases[p->phase[i]], p->rho[i]);
     if (threshold) density_threshold(p, i, &e->c->phases[p->phase[i]]);
   }
-  bodies_rk_update(e, s, ws, step, last);
-  if (e->moving_walls) move_ghosts(e, start, e->step_start_time + (!last ? rk->next[s] : 1.0) * e->dt);
+  double t_next = e->step_start_time + (!last ? rk->next[s] : 1.0) * e->dt;
+  bodies_rk_update(e, s, ws, step, last, t_next);
+  if (e->moving_walls) move_ghosts(e, start, t_next);
 }
 
 int engine_step(struct engine *e) { return scheme_of(e->c->scheme)->step(e); }

@@ -71,6 +71,28 @@ void rigid_rates(const struct body *b, int dim, const double *state, const doubl
   }
 }
 
+void rigid_prescribe(const struct body *b, int dim, const struct frame *law, double *state, double *rate,
+                     double *acc, double *ang_acc) {
+  for (int d = 0; d < dim; d++) {
+    if (!(b->prescribed & (BODY_DOF_X << d))) continue;
+    state[RB_X + d] = b->centre[d] + law->d[d];
+    state[RB_V + d] = law->v[d];
+    acc[d] = law->a[d];
+    if (rate) rate[RB_X + d] = law->v[d], rate[RB_V + d] = law->a[d];
+  }
+  if (!(b->prescribed & BODY_DOF_RZ)) return;
+  const double *axis = dim == 2 ? (const double[3]){0, 0, 1} : law->axis;
+  if (dim == 2) state[RB_THETA] = law->theta;
+  else
+    for (int k = 0; k < 4; k++) state[RB_Q + k] = k ? sin(0.5 * law->theta) * axis[k - 1] : cos(0.5 * law->theta);
+  for (int d = 3 - (dim == 2 ? 1 : 3); d < 3; d++) {
+    state[RB_W + d] = law->omega * axis[d];
+    ang_acc[d] = law->alpha * axis[d];
+    if (rate) rate[RB_W + d] = ang_acc[d];
+  }
+  if (rate && dim == 2) rate[RB_THETA] = law->omega;
+}
+
 void rigid_normalise(int dim, double *state) {
   if (dim != 3) return;
   double *q = &state[RB_Q], len = sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
