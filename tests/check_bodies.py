@@ -11,7 +11,9 @@
   check_bodies.py draft RUN T0           every body (a box floating in the first phase) sits over
                                          t >= T0 (mean) at its draft M / (rho0 B) below the mean of
                                          the elevation probes within 2 %, carrying its weight M g
-                                         within 1 %
+                                         within 1 %; a pressure probe it carries (the centre of
+                                         its bottom face) reads the pressure M g / B that carries
+                                         the weight within 2 %
 """
 import sys
 import numpy as np
@@ -103,7 +105,8 @@ def check_draft(run, t0):
     case, walls = bodies_of(run)
     rho, g = case["phases"][0]["rho0"], -case["gravity"][-1]
     b, p = table(f"{run}/bodies.csv"), table(f"{run}/probes.csv")
-    level = np.mean([np.mean(p[name][p["time"] >= t0]) for name in p.dtype.names[2:]])
+    gauges = [q["name"] for q in case["probes"] if q["kind"] == "elevation"]
+    level = np.mean([np.mean(p[name][p["time"] >= t0]) for name in gauges])
     late = b["time"] >= t0
     for k, wall in walls:
         mass, size = wall["body"]["mass"], box_size(wall)
@@ -119,6 +122,12 @@ def check_draft(run, t0):
               f"fluid force / M g {weight:.5f}")
         assert abs(draft / expected - 1) < 0.02, "draft off by more than 2 %"
         assert abs(weight - 1) < 0.01, "the fluid does not carry the body's weight within 1 %"
+        for q in (q for q in case["probes"] if q.get("wall") == k):
+            pressure = np.mean(p[q["name"]][p["time"] >= t0])
+            carrying = mass * g / np.prod(size[:-1])
+            print(f"body {k}: its probe {q['name']} reads {pressure:.2f} Pa against M g / B = {carrying:.2f} Pa "
+                  f"({100 * (pressure / carrying - 1):+.2f} %; rho0 g draft = {rho * g * draft:.2f} Pa)")
+            assert abs(pressure / carrying - 1) < 0.02, "the probe carried on the bottom face is off"
 
 
 if __name__ == "__main__":

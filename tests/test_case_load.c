@@ -670,6 +670,12 @@ static void test_bodies(void) {
   const char *spin = "walls: [{box: {min: [0, 0, 0], max: [1, 1, 1]}, body: {mass: 1, prescribed: [rx, ry, rz]}, "
                      "motion: {rotation: {amplitude: 0.1, period: 1, centre: [0.5, 0.5, 0.5], axis: [1, 1, 0]}}}]";
   round_trip(case_3d(spin));
+  const char *carried = "  - {name: p0, position: [0.5, 0.4], wall: 1}\nwalls: [{box: {min: [0, 0], max: [1, 1]}}, "
+                        "{box: {min: [0.4, 0.4], max: [0.6, 0.6]}, fluid_side: outside, body: {mass: 1}}]";
+  CHECK(load(variant(12, carried), 0, NULL, &c) == 0 && c.probes[0].wall == 1, "a sensor the body carries: %s", err);
+  round_trip(variant(12, carried));
+  expect_error(variant(12, "  - {name: p0, position: [0.5, 0.4], wall: 0}\nwalls: [{box: {min: [0, 0], max: [1, 1]}}]"),
+               0, NULL, "probes.0.wall: got wall 0", "the index of a moving wall");
   expect_error(case_3d("walls: [{box: {min: [0, 0, 0], max: [1, 1, 1]}, body: {mass: 1, prescribed: [rx]}, "
                        "motion: {rotation: {amplitude: 0.1, period: 1, centre: [0.5, 0.5, 0.5], axis: [1, 0, 0]}}}]"),
                0, NULL, "walls.0.body: got some of a 3D body's rotations prescribed", "rx, ry and rz together");

@@ -121,6 +121,8 @@ struct probe {
   double axis[3];            /* pressure with diameter > 0: direction of the face (not normalised) */
   enum probe_interpolation interpolation;   /* pressure */
   int phase;                 /* elevation, integral: index into case.phases */
+  int wall;                  /* pressure: the moving wall (a motion or a body) that carries the
+                                sensor, its position and axis given at t = 0; -1: fixed in space */
 };
 
 #define PROBE_MAX_COLUMNS 6   /* probes.csv columns of one probe (an integral in 3D) */

@@ -64,7 +64,7 @@ static const char *const TRANSLATION_KEYS[] = {"amplitude", "period", "phase", "
 static const char *const ROTATION_KEYS[] = {"amplitude", "period", "phase", "ramp", "centre", "axis", NULL};
 static const char *const RAMP_KEYS[] = {"shape", "time", NULL};
 static const char *const PROBE_KEYS[] = {"name", "kind", "position", "diameter", "axis",
-                                         "interpolation", "phase", NULL};
+                                         "interpolation", "phase", "wall", NULL};
 
 static const char *const ALNUM = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789";
 static const char *const NAME_PUNCT = "._-";   /* case and phase names (a directory name) */
@@ -842,10 +842,10 @@ static int read_wall(const struct map *m, struct case_def *c, int i) {
 }
 
 /* The keys of a probe item each kind reads (name and kind aside). */
-static const char *const PROBE_KIND_KEYS[][5] = {
-    {"position", "diameter", "axis", "interpolation", NULL},   /* pressure */
-    {"position", "phase", NULL},                               /* elevation */
-    {"phase", NULL}};                                          /* integral */
+static const char *const PROBE_KIND_KEYS[][6] = {
+    {"position", "diameter", "axis", "interpolation", "wall", NULL},   /* pressure */
+    {"position", "phase", NULL},                                       /* elevation */
+    {"phase", NULL}};                                                  /* integral */
 
 /* Every key of probe item m is one its kind reads. */
 static int probe_keys(const struct map *m, enum probe_kind kind) {
@@ -885,6 +885,19 @@ static int sensor_face(const struct map *m, struct probe *p, const struct case_d
   return inside(m, "diameter", lo, lo, c) || inside(m, "diameter", hi, hi, c);
 }
 
+/* The moving wall that carries pressure sensor p (key wall; absent: fixed in space, -1). */
+static int sensor_wall(const struct map *m, struct probe *p, const struct case_def *c) {
+  char path[PATH_LEN];
+  double w = -1;
+  const struct ynode *v = get(m, "wall", path);
+  if (v && num(m, "wall", &R_COUNT, 0, &w)) return 1;
+  p->wall = (int)w;
+  if (v && (p->wall >= c->n_walls || !c->walls[p->wall].moving))
+    return fail(m->ld, v, path, "got wall %d, expected the index of a moving wall (one with a motion or a body)",
+                p->wall);
+  return 0;
+}
+
 /* A wave gauge needs a vertical: gravity not zero. */
 static int gravity_axis(const struct map *m, const struct case_def *c) {
   char path[PATH_LEN];
@@ -904,7 +917,7 @@ static int probe_body(const struct map *m, struct probe *p, const struct case_de
   if (p->kind == PROBE_ELEVATION) return phase_index(m, c, &p->phase) || gravity_axis(m, c);
   if (choice(m, "interpolation", INTERP_NAMES, INTERP_SHEPARD, &interp)) return 1;
   p->interpolation = (enum probe_interpolation)interp;
-  return sensor_face(m, p, c);
+  return sensor_face(m, p, c) || sensor_wall(m, p, c);
 }
 
 /* The probes.csv columns of probe i differ from those of the earlier probes. */
@@ -930,6 +943,7 @@ static int read_probe(const struct map *m, struct case_def *c, int i) {
       choice(m, "kind", PROBE_KIND_NAMES, PROBE_PRESSURE, &kind))
     return 1;
   p->kind = (enum probe_kind)kind;
+  p->wall = -1;
   return probe_body(m, p, c) || unique_columns(m, c, i);
 }
 
@@ -1148,6 +1162,7 @@ static void put_probe(FILE *f, const struct case_def *c, int i) {
   put_word(f, "    ", "interpolation", INTERP_NAMES[p->interpolation]);
   put_num(f, "    ", "diameter", p->diameter);
   if (p->diameter > 0) put_vec(f, "    ", "axis", p->axis, c->dimension);
+  if (p->wall >= 0) put_long(f, "    ", "wall", p->wall);
 }
 
 /* ---- defaults computed from the keys read before ---- */

@@ -558,8 +558,8 @@ int engine_step_rk(struct engine *e) {
     }
     rk_update(e, rk, s, start);
   }
-  bodies_frames(e, e->prm.frames);   /* the bodies where the step ends (a prescribed motion's last
-                                        stage frame is already its frame there) */
+  wall_frames(e, e->time + e->dt, e->prm.frames);   /* the walls where the step ends (for the checks
+                                                       and probes between steps) */
   e->stage = -1;   /* between steps */
   e->time += e->dt;
   e->step++;

@@ -109,10 +109,15 @@ static void sample_point(const struct engine *e, const struct probe *p, int i, i
     x[a] = (up > 0 ? c->domain_min[a] : c->domain_max[a]) + up * i * *step;
     return;
   }
+  double axis[3] = {p->axis[0], p->axis[1], p->axis[2]};
+  if (p->wall >= 0) {   /* carried by a moving wall: where its frame at the last step's end puts it */
+    frame_position(&e->prm.frames[p->wall], c->dimension, p->position, x);
+    frame_turn(&e->prm.frames[p->wall], c->dimension, axis, axis);
+  }
   if (p->diameter == 0) return;
-  for (int d = 0; d < c->dimension; d++) len += p->axis[d] * p->axis[d];
+  for (int d = 0; d < c->dimension; d++) len += axis[d] * axis[d];
   double s = ((i + 0.5) / n - 0.5) * p->diameter / sqrt(len);   /* midpoint rule */
-  for (int d = 0; d < c->dimension; d++) x[d] += s * p->axis[d];
+  for (int d = 0; d < c->dimension; d++) x[d] += s * axis[d];
 }
 
 /* ---- interpolation at one point ---- */
