@@ -11,7 +11,10 @@
  *     removed in both cases;
  *  3. a tank moving up at 0.2 pi m/s (sinusoid at t = 0): the velocity relative to the floor is
  *     what counts, and the corrected particle moves with the floor; likewise the acceleration,
- *     relative to the floor's (zero at t = 0 for a sinusoid started at its zero).
+ *     relative to the floor's (zero at t = 0 for a sinusoid started at its zero);
+ *  4. a free rigid body (a box above the water, no gravity): the velocity the guard takes from a
+ *     particle closing on its bottom goes to the body as an impulse (momentum and angular
+ *     momentum conserved), and the acceleration it removes in a stage becomes a load on it.
  * Usage: test_wall_guard [TMPDIR] */
 #include <math.h>
 #include <stdio.h>
@@ -52,6 +55,22 @@ static const char *moving_case =
     "walls:\n"
     "  - {box: {min: [0, 0], max: [1, 1]}, slip: free,\n"
     "     motion: {translation: {amplitude: [0, 0.1], period: 1.0}}}\n"
+    "physics: {wall_guard: 0.25, free_surface: off}\n"
+    "output: {progress_interval: 1000}\n";
+
+static const char *body_case =
+    "name: wall-guard-body\n"
+    "dimension: 2\n"
+    "resolution: {dx: 0.05}\n"
+    "time: {end: 1.0}\n"
+    "domain: {min: [-0.3, -0.3], max: [1.3, 1.3]}\n"
+    "phases:\n"
+    "  - {name: water, rho0: 1000, c0: 20, incompressible: true}\n"
+    "fluids:\n"
+    "  - {phase: water, box: {min: [0, 0], max: [1, 0.5]}}\n"
+    "walls:\n"
+    "  - {box: {min: [0, 0], max: [1, 1]}, slip: free}\n"
+    "  - {box: {min: [0.4, 0.6], max: [0.6, 0.7]}, fluid_side: outside, body: {mass: 4, inertia: 0.5}}\n"
     "physics: {wall_guard: 0.25, free_surface: off}\n"
     "output: {progress_interval: 1000}\n";
 
@@ -131,6 +150,32 @@ static void moving_tank(struct engine *e, const struct case_def *c) {
   CHECK(fabs(e->w.dv[1][i]) < TOL, "moving floor: dv/dt_y = %g, want 0", e->w.dv[1][i]);
 }
 
+/* A particle 0.1 dx under the body's bottom, 0.05 m left of its centre, moving up at 2 m/s: the
+ * body (at rest, centre (0.5, 0.65)) takes its momentum m (0, 2) and the angular momentum
+ * (-0.05 m) x (m (0, 2)) about its centre; in a stage the removed acceleration (0, 30) is a load
+ * -m (0, 30) on it at the particle. Every rank places its own particle there: the body takes the
+ * sum of their impulses. */
+static void body_reaction(struct engine *e) {
+  long i = first_fluid(e);
+  park_all(e);
+  double m = e->p.m[i], *y = e->bodies.run[0].y;
+  place(e, i, 0.45, 0.595, 0.3, 2);
+  expect_after_step(e, i, 0.3, 0, 1, "closing on the body's bottom");
+  CHECK_CLOSE(y[RB_V + 1], e->n_ranks * 2 * m / 4, TOL, "the body's velocity takes the particles' momentum");
+  CHECK_CLOSE(y[RB_W + 2], e->n_ranks * -0.05 * 2 * m / 0.5, TOL, "the body's spin takes their angular momentum");
+  CHECK(y[RB_V] == 0, "no tangential impulse (free slip)");
+  y[RB_V + 1] = y[RB_W + 2] = 0;
+  place(e, i, 0.45, 0.595, 0, 0);
+  e->w.dv[1][i] = 30;
+  struct pass_ctx ctx = engine_pass_ctx(e);
+  pass_wall_guard(&ctx);
+  CHECK(e->w.dv[1][i] == 0 && ctx.loads->n == 1, "the stage's acceleration into the body removed, one load");
+  CHECK(ctx.loads->at[0].wall == 1 && ctx.loads->at[0].source == LOAD_GUARD &&
+        ctx.loads->at[0].force[1] == m * 30 && ctx.loads->at[0].force[0] == 0,
+        "the load on the body: (%g, %g), want (0, %g)", ctx.loads->at[0].force[0], ctx.loads->at[0].force[1], m * 30);
+  ctx.loads->n = 0;
+}
+
 int main(int argc, char **argv) {
   MPI_Init(&argc, &argv);
   char dir[256];
@@ -145,5 +190,11 @@ int main(int argc, char **argv) {
   struct engine em;
   if (engine_test_start(dir, moving_case, &cm, &em)) return 1;
   moving_tank(&em, &cm);
-  return engine_test_finish(&em, dir, "test_wall_guard");
+  engine_close_output(&em);
+  engine_free(&em);
+  struct case_def cb;
+  struct engine eb;
+  if (engine_test_start(dir, body_case, &cb, &eb)) return 1;
+  body_reaction(&eb);
+  return engine_test_finish(&eb, dir, "test_wall_guard");
 }

@@ -51,6 +51,11 @@ void bodies_frames(const struct engine *e, struct frame *f);
  *  force, torque, accelerations and rates. Collective. */
 void bodies_evaluate(struct engine *e);
 
+/** After a step and its wall guard: gather the impulses the guard's velocity corrections put on
+ *  the bodies (LOAD_GUARD_IMPULSE loads), sum them per body in the fluid particles' id order and
+ *  change the bodies' velocities by them (rigid_impulse). Collective. */
+void bodies_apply_impulses(struct engine *e);
+
 /** At the start of a step: the current state is the step's start. */
 void bodies_save(struct engine *e);
 

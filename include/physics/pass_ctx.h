@@ -40,12 +40,17 @@ enum {
 
 /** The force of one fluid particle's pair terms with the ghosts of one body: minus the particle's
  *  mass times the part of its du/dt those pairs make (action and reaction). */
+/** What a body load holds: the pair forces of a stage, the wall guard's removed acceleration of a
+ *  stage (a contact force), or the wall guard's velocity correction after a step (an impulse). */
+enum body_load_source { LOAD_PAIRS = 0, LOAD_GUARD = 1, LOAD_GUARD_IMPULSE = 2 };
+
 struct body_load {
   int64_t id;                      /* the fluid particle's id (the loads are summed in id order) */
   int wall;                        /* the body's wall index */
+  int source;                      /* enum body_load_source: the order of one particle's loads */
   double x[3];                     /* the fluid particle's position: every pair force is along the
                                       pair's separation, so its torque is taken here [m] */
-  double force[3];                 /* on the body [N] (2D: [N/m]) */
+  double force[3];                 /* on the body [N] (2D: [N/m]); an impulse [N s] (2D: [N s/m]) */
 };
 
 /** The body loads of a stage, appended by the rhs pass in any order. */
@@ -53,6 +58,11 @@ struct body_loads {
   struct body_load *at;
   long n, cap;
 };
+
+/** Append to the loads the reaction on body wall w of the acceleration (or, for an impulse, the
+ *  velocity change) dv that the body gave fluid particle i: -m_i dv at the particle's position. */
+void body_load_append(struct body_loads *l, const struct parts *p, long i, int w, enum body_load_source source,
+                      const double *dv);
 
 /** Work arrays of the scheme, sized to the particle capacity (those read at halo slots) or to
  *  the owned particles (the RK4 state and sums, the derivatives, the free-surface region and

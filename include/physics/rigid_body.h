@@ -33,6 +33,11 @@ void rigid_rates(const struct body *b, int dim, const double *state, const doubl
 void rigid_prescribe(const struct body *b, int dim, const struct frame *law, double *state, double *rate,
                      double *acc, double *ang_acc);
 
+/** Change body b's state by an impulse [N s] and angular impulse about the centre of mass
+ *  [N m s] (2D: per metre, angular[2]): V += J / M, omega += I^-1 L (I = R I_b R^T in 3D), in
+ *  the degrees of freedom that are neither fixed nor prescribed. */
+void rigid_impulse(const struct body *b, int dim, const double *impulse, const double *angular, double *state);
+
 /** Scale the quaternion of a 3D state back to unit length (the Runge-Kutta update does not keep
  *  it); nothing in 2D. */
 void rigid_normalise(int dim, double *state);

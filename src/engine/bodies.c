@@ -44,11 +44,12 @@ void bodies_frames(const struct engine *e, struct frame *f) {
   }
 }
 
-/* Order of the gathered loads: by body wall, then by fluid particle id. */
+/* Order of the gathered loads: by body wall, then by fluid particle id, then by source. */
 static int load_order(const void *a, const void *b) {
   const struct body_load *x = a, *y = b;
   if (x->wall != y->wall) return x->wall < y->wall ? -1 : 1;
-  return (x->id > y->id) - (x->id < y->id);
+  if (x->id != y->id) return x->id < y->id ? -1 : 1;
+  return (x->source > y->source) - (x->source < y->source);
 }
 
 /* Gather every rank's loads into B->all, sorted; returns their count. */
@@ -71,30 +72,48 @@ static long gather_loads(struct engine *e) {
   return total;
 }
 
-/* Force and torque about the centre of mass of body r from the sorted loads [first, end). */
-static void sum_loads(const struct body_load *l, long n, struct body_run *r) {
-  const double *c = &r->y[RB_X];
-  memset(r->force, 0, sizeof r->force);
-  memset(r->torque, 0, sizeof r->torque);
+/* Force and torque about the centre of mass c from the sorted loads l[0, n). */
+static void sum_loads(const struct body_load *l, long n, const double *c, double *force, double *torque) {
+  memset(force, 0, 3 * sizeof *force);
+  memset(torque, 0, 3 * sizeof *torque);
   for (long k = 0; k < n; k++) {
     double arm[3] = {l[k].x[0] - c[0], l[k].x[1] - c[1], l[k].x[2] - c[2]};
     const double *f = l[k].force;
-    for (int d = 0; d < 3; d++) r->force[d] += f[d];
-    r->torque[0] += arm[1] * f[2] - arm[2] * f[1];
-    r->torque[1] += arm[2] * f[0] - arm[0] * f[2];
-    r->torque[2] += arm[0] * f[1] - arm[1] * f[0];
+    for (int d = 0; d < 3; d++) force[d] += f[d];
+    torque[0] += arm[1] * f[2] - arm[2] * f[1];
+    torque[1] += arm[2] * f[0] - arm[0] * f[2];
+    torque[2] += arm[0] * f[1] - arm[1] * f[0];
   }
+}
+
+/* Gather the loads and sum them per body k (about its centre of mass) into force[k], torque[k]. */
+static void sum_bodies(struct engine *e, double (*force)[3], double (*torque)[3]) {
+  struct bodies *B = &e->bodies;
+  long total = gather_loads(e), first = 0;
+  for (int k = 0; k < B->n; k++) {
+    long end = first;
+    while (end < total && B->all[end].wall == B->run[k].wall) end++;
+    sum_loads(B->all + first, end - first, &B->run[k].y[RB_X], force[k], torque[k]);
+    first = end;
+  }
+}
+
+void bodies_apply_impulses(struct engine *e) {
+  struct bodies *B = &e->bodies;
+  double impulse[CASE_MAX_WALLS][3], angular[CASE_MAX_WALLS][3];
+  sum_bodies(e, impulse, angular);
+  for (int k = 0; k < B->n; k++)
+    rigid_impulse(&e->c->walls[B->run[k].wall].body, e->p.dim, impulse[k], angular[k], B->run[k].y);
 }
 
 void bodies_evaluate(struct engine *e) {
   struct bodies *B = &e->bodies;
-  long total = gather_loads(e), first = 0;
+  double force[CASE_MAX_WALLS][3], torque[CASE_MAX_WALLS][3];
+  sum_bodies(e, force, torque);
   for (int k = 0; k < B->n; k++) {
     struct body_run *r = &B->run[k];
-    long end = first;
-    while (end < total && B->all[end].wall == r->wall) end++;
-    sum_loads(B->all + first, end - first, r);
-    first = end;
+    memcpy(r->force, force[k], sizeof r->force);
+    memcpy(r->torque, torque[k], sizeof r->torque);
     rigid_rates(&e->c->walls[r->wall].body, e->p.dim, r->y, r->force, r->torque, e->c->gravity, r->rate, r->acc,
                 r->ang_acc);
     prescribe(e, r, e->stage_time, 1);

@@ -329,6 +329,7 @@ struct pass_ctx engine_pass_ctx(struct engine *e) {
 long engine_wall_guard(struct engine *e) {
   struct pass_ctx ctx = engine_pass_ctx(e);
   long hits = wall_guard_apply(&ctx);
+  if (e->bodies.n) bodies_apply_impulses(e);
   e->wall_guard_hits += hits;
   return hits;
 }

@@ -17,7 +17,6 @@
  * The terms a case does not use are compiled out of its loop (see dispatch()). With rigid bodies,
  * the same sums over the ghosts of each body alone give the body loads (the force on the body). */
 #include <math.h>
-#include "base/mem.h"
 #include "physics/interface.h"
 #include "physics/passes.h"
 
@@ -226,22 +225,6 @@ static void finish(struct pass_ctx *ctx, const struct centre *ci, const struct f
   for (int d = 0; d < p->dim; d++) ctx->w->dv[d][i] = acc[d] + g[d];
 }
 
-/* Append to the loads the force on the ghosts of body wall w from fluid particle i. */
-static void append_load(struct pass_ctx *ctx, long i, int w, const double *acc) {
-  struct body_loads *l = ctx->loads;
-  const struct parts *p = ctx->p;
-  if (l->n == l->cap) {
-    l->cap = l->cap ? 2 * l->cap : 256;
-    l->at = mem_realloc(l->at, mem_bytes((size_t)l->cap, sizeof *l->at, "body loads"), "body loads");
-  }
-  struct body_load *b = &l->at[l->n++];
-  *b = (struct body_load){.id = p->id[i], .wall = w};
-  for (int d = 0; d < p->dim; d++) {
-    b->x[d] = p->x[d][i];
-    b->force[d] = -p->m[i] * acc[d];
-  }
-}
-
 /* The body loads of fluid particle i: for each body, its sums over that body's ghosts alone (the
  * same pair terms as its du/dt), times -m_i; none for a body without ghosts among its
  * neighbours. One generic (not specialised) loop: it runs only in scenes with bodies. */
@@ -255,7 +238,7 @@ static __attribute__((noinline)) void add_body_loads(struct pass_ctx *ctx, const
     fluid_sums(ctx, ci, nb, &s, &n_pairs, ctx->p->dim, t->du, t->damp, t->phases, t->diss, w);
     if (n_pairs == 0) continue;
     pair_acceleration(ctx, ci, &s, acc);
-    append_load(ctx, ci->i, w, acc);
+    body_load_append(ctx->loads, ctx->p, ci->i, w, LOAD_PAIRS, acc);
   }
 }
 

@@ -93,6 +93,24 @@ void rigid_prescribe(const struct body *b, int dim, const struct frame *law, dou
   if (rate && dim == 2) rate[RB_THETA] = law->omega;
 }
 
+void rigid_impulse(const struct body *b, int dim, const double *impulse, const double *angular, double *state) {
+  const unsigned held = b->fixed | b->prescribed;
+  double dw[3] = {0, 0, 0};
+  if (dim == 2) {
+    dw[2] = angular[2] / b->inertia[2];
+  } else {   /* I^-1 L = R I_b^-1 R^T L */
+    double R[3][3], lb[3];
+    quaternion_matrix(&state[RB_Q], R);
+    turn(R, 1, angular, lb);
+    for (int d = 0; d < 3; d++) lb[d] /= b->inertia[d];
+    turn(R, 0, lb, dw);
+  }
+  for (int d = 0; d < 3; d++) {
+    if (d < dim && !(held & (BODY_DOF_X << d))) state[RB_V + d] += impulse[d] / b->mass;
+    if (!(held & (BODY_DOF_RX << d))) state[RB_W + d] += dw[d];
+  }
+}
+
 void rigid_normalise(int dim, double *state) {
   if (dim != 3) return;
   double *q = &state[RB_Q], len = sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);

@@ -6,7 +6,9 @@
  * few steps whatever pressure the ghosts hold (doc/stability.md). Paper 000 (§2.5, its ref. [69])
  * names a normal-velocity correction of near-wall particles for this; the form here is ours
  * (doc/theory.md §5). It acts on a particle only when it trips, so a flow that keeps its distance
- * from the walls is bitwise unchanged. */
+ * from the walls is bitwise unchanged. On a rigid body the guard is a contact force: what it
+ * removes from a particle's acceleration (in a stage) or velocity (after a step) goes to the body
+ * as a load or an impulse (physics/pass_ctx.h). */
 #include <math.h>
 #include "case/geometry.h"
 #include "physics/passes.h"
@@ -60,10 +62,20 @@ static double normal_part(int dim, const double *n, const double *a, const doubl
   return s;
 }
 
-/* Subtract the negative part of component c along n from the field f at particle i. */
-static void remove_inward(double *const *f, long i, int dim, const double *n, double c) {
-  if (c < 0)
-    for (int k = 0; k < dim; k++) f[k][i] -= c * n[k];
+/* Subtract the negative part of component c along n from the field f at particle i; the change
+ * made to it into change (zero when c >= 0). */
+static void remove_inward(double *const *f, long i, int dim, const double *n, double c, double *change) {
+  for (int k = 0; k < dim; k++) {
+    change[k] = c < 0 ? -c * n[k] : 0.0;
+    if (c < 0) f[k][i] -= c * n[k];
+  }
+}
+
+/* The reaction on wall w, if it is a rigid body, of the guard's change to particle i. */
+static void body_reaction(const struct pass_ctx *ctx, long i, int w, enum body_load_source source,
+                          const double *change) {
+  if ((ctx->prm->body_walls >> w & 1) && (change[0] != 0 || change[1] != 0 || change[2] != 0))
+    body_load_append(ctx->loads, ctx->p, i, w, source, change);
 }
 
 /* The guard distance [m], 0 when the guard is off. */
@@ -74,23 +86,27 @@ static double guard_distance(const struct pass_ctx *ctx) {
 void pass_wall_guard(struct pass_ctx *ctx) {
   struct parts *p = ctx->p;
   double guard = guard_distance(ctx), n[3], u_wall[3], a_wall[3], v[3], a[3], du[3], zero[3] = {0, 0, 0};
+  double change[3] = {0, 0, 0};
   int dim = p->dim;
   for (long i = 0; i < p->n_owned; i++) {
     if (!part_has(p->phase[i], KIND_INTEGRATED)) continue;
     for (int w = 0; w < ctx->c->n_walls; w++) {
       if (!near_wall(ctx, i, w, guard, n, u_wall, a_wall)) continue;
       for (int k = 0; k < dim; k++) v[k] = p->v[k][i], a[k] = ctx->w->dv[k][i];
-      if (normal_part(dim, n, v, u_wall) <= 0) remove_inward(ctx->w->dv, i, dim, n, normal_part(dim, n, a, a_wall));
+      if (normal_part(dim, n, v, u_wall) <= 0) {
+        remove_inward(ctx->w->dv, i, dim, n, normal_part(dim, n, a, a_wall), change);
+        body_reaction(ctx, i, w, LOAD_GUARD, change);
+      }
       if (!ctx->w->du[0]) continue;
       for (int k = 0; k < dim; k++) du[k] = ctx->w->du[k][i];
-      remove_inward(ctx->w->du, i, dim, n, normal_part(dim, n, du, zero));
+      remove_inward(ctx->w->du, i, dim, n, normal_part(dim, n, du, zero), change);
     }
   }
 }
 
 long wall_guard_apply(const struct pass_ctx *ctx) {
   struct parts *p = ctx->p;
-  double guard = guard_distance(ctx), n[3], u_wall[3], a_wall[3], v[3];
+  double guard = guard_distance(ctx), n[3], u_wall[3], a_wall[3], v[3], change[3] = {0, 0, 0};
   int dim = p->dim;
   long hits = 0;
   if (!(guard > 0)) return 0;
@@ -101,7 +117,8 @@ long wall_guard_apply(const struct pass_ctx *ctx) {
       for (int k = 0; k < dim; k++) v[k] = p->v[k][i];
       double un = normal_part(dim, n, v, u_wall);
       hits += un < 0;
-      remove_inward(p->v, i, dim, n, un);
+      remove_inward(p->v, i, dim, n, un, change);
+      body_reaction(ctx, i, w, LOAD_GUARD_IMPULSE, change);
     }
   }
   return hits;
