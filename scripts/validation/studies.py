@@ -343,7 +343,7 @@ STUDIES.append({
     "metric": functools.partial(metrics.wedge_velocity, reference=DATA.format(case="wedge-entry-yettou", file=WEDGE_REF)),
     # the case's c0 = 10 x the entry velocity; c0 = 100 m/s and tensile control off as sensitivity rungs
     # (cases/wedge-entry-yettou/README.md)
-    "rungs": [rung(0.02, 1, True), rung(0.01, 2, True), rung(0.005, 2), rung(0.0025, 2),
+    "rungs": [rung(0.02, 1, True), rung(0.01, 2), rung(0.005, 2), rung(0.0025, 2),
               rung(0.02, 1, True, label="delta-plus, c0 = 100 m/s", **{"phases.0.c0": 100}),
               rung(0.01, 2, label="delta-plus, c0 = 100 m/s", **{"phases.0.c0": 100}),
               rung(0.02, 1, True, label="delta-plus, no tensile control", **{"physics.tensile_control": "false"}),
