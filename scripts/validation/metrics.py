@@ -698,3 +698,41 @@ def laplace_jump(run, dx, t_start=0.01):
     notes = "%d snapshots from t = %.3g s; p_in - p_out %.3f Pa against sigma/R %.3f Pa; max |u| %.3g m/s; " \
             "stray particles %d" % (len(t), t[0], jump.mean(), sigma / radius.mean(), u_max.max(), stray.max())
     return err, notes, {"t": t, "jump": jump, "t_ref": t, "jump_ref": sigma / radius}
+
+
+# --- free-fall wedge water entry (Yettou et al. 2006, via Sun et al. 2015) --------------------
+
+def body_heave(run):
+    """Time [s] and downward velocity [m/s] of the first body of a run's bodies.csv (its body<W>_vy
+    column, y up, negated)."""
+    rows = read_csv(os.path.join(run, "bodies.csv"))
+    vy = next(name for name in rows if name.endswith("_vy"))
+    return rows["time"], -rows[vy]
+
+
+def reference_curve(ref, source, quantity):
+    """Time [ms] and value of one source's quantity in a reference read by read_reference."""
+    use = (ref["source"] == source) & (ref["quantity"] == quantity)
+    return ref["t_ms"][use].astype(float), ref["value"][use].astype(float)
+
+
+def wedge_velocity(run, dx, reference, v_entry=5.05, t_to_ms=40.0):
+    """Wedge water entry: max |v_SPH - v_exp| / v_entry over the experiment's digitised points from
+    first contact (t = 0 of the run) to t_to_ms, the run's velocity (bodies.csv rows) linear in
+    time between rows; downward positive. Sun et al.'s SPH curve is compared the same way in the
+    notes."""
+    t, v = body_heave(run)
+    ref = read_reference(reference)
+    t_exp, v_exp = reference_curve(ref, "experiment_yettou2006", "velocity_m_per_s")
+    t_sph, v_sph = reference_curve(ref, "sun2015_sph_dx2.5mm_NUMERICAL", "velocity_m_per_s")
+    use = (t_exp <= t_to_ms) & (t_exp <= 1000 * t[-1] + 1e-9)
+    dev = np.interp(t_exp[use], 1000 * t, v) - v_exp[use]
+    k = int(np.argmax(np.abs(dev)))
+    near = t_sph <= 1000 * t[-1] + 1e-9
+    dev_sph = np.max(np.abs(np.interp(t_sph[near], 1000 * t, v) - v_sph[near])) / v_entry
+    notes = "%d points to %.1f ms; largest deviation %+.3f m/s at %.1f ms; v(%.1f ms) = %.3f m/s (experiment %.3f); " \
+            "max |v - v_Sun2015 SPH| / v_entry %.3f" % (use.sum(), t_exp[use][-1], dev[k], t_exp[use][k],
+                                                        t_exp[use][-1], dev[-1] + v_exp[use][-1], v_exp[use][-1],
+                                                        dev_sph)
+    return np.max(np.abs(dev)) / v_entry, notes, {"t": 1000 * t, "v": v, "t_ref": t_exp, "v_ref": v_exp,
+                                                   "t_sph": t_sph, "v_sph": v_sph}

@@ -137,3 +137,13 @@ def laplace(ax, items):
 def hydrostatic_1phase(ax, items):
     """Centreline pressure against height in the single-phase tank, with rho g (H - y)."""
     _centreline(ax, items, 1.0, 0.0)
+
+
+def wedge(ax, items):
+    """Downward velocity of the wedge against time from first contact, with Yettou et al.'s
+    experiment and Sun et al.'s SPH (dashed)."""
+    _runs_and_reference(ax, items, ("t", "v"), ("t_ref", "v_ref"), "-", "ks", "Yettou et al. 2006 (experiment)",
+                        ("t [ms] from first contact", "downward velocity [m/s]"))
+    if items:
+        c = items[-1][1]
+        ax.plot(c["t_sph"], c["v_sph"], "k--", lw=0.8, label="Sun et al. 2015 SPH, dx = 2.5 mm")

@@ -329,3 +329,24 @@ STUDIES.append({
 def case_path(study, r=None):
     """The case file of a study, or of one of its rungs."""
     return os.path.join("cases", (r or {}).get("case") or study["case"], "case.yaml")
+
+WEDGE_REF = "wedge_entry_yettou2006_25deg_velocity_digitized.csv"
+STUDIES.append({
+    "id": "wedge-entry-yettou",
+    "case": "wedge-entry-yettou",
+    "title": "Free-fall wedge water entry, Yettou et al. 2006 (25 deg deadrise, 94 kg/m, 5.05 m/s), 0-40 ms",
+    "length": ("B", 1.2),
+    "reference": "the wedge's velocity in the experiment, digitised from Sun et al. 2015, reference/" + WEDGE_REF,
+    "error": "max |v_SPH - v_exp| / 5.05 m/s over the experiment's points in 0-40 ms, v_SPH linear between "
+             "bodies.csv rows (0.5 ms); threshold 5 % (issue 25)",
+    "threshold": 0.05,
+    "metric": functools.partial(metrics.wedge_velocity, reference=DATA.format(case="wedge-entry-yettou", file=WEDGE_REF)),
+    # the case's c0 = 10 x the entry velocity; c0 = 100 m/s and tensile control off as sensitivity rungs
+    # (cases/wedge-entry-yettou/README.md)
+    "rungs": [rung(0.02, 1, True), rung(0.01, 2), rung(0.005, 2), rung(0.0025, 2),
+              rung(0.02, 1, True, label="delta-plus, c0 = 100 m/s", **{"phases.0.c0": 100}),
+              rung(0.01, 2, label="delta-plus, c0 = 100 m/s", **{"phases.0.c0": 100}),
+              rung(0.02, 1, True, label="delta-plus, no tensile control", **{"physics.tensile_control": "false"}),
+              rung(0.01, 2, label="delta-plus, no tensile control", **{"physics.tensile_control": "false"})],
+    "plot": "wedge",
+})
