@@ -164,7 +164,8 @@ bench: deps
 	  $(if $(DUALSPHYSICS_SRC),--dualsphysics-src $(DUALSPHYSICS_SRC))
 
 # The validation ladder and doc/validation/README.md; QUICK=1: the cheap rungs only (~19 min on
-# 2 cores). Runs go to runs/validate/; VALIDATE_ARGS passes e.g. --only STUDY or --reuse.
+# 2 cores). Runs go to runs/validate/; VALIDATE_ARGS passes e.g. --only STUDY (which updates that
+# study's part of the report, keeping the others) or --reuse.
 validate: deps
 	@$(MAKE) --no-print-directory build/mpsph
 	@$(PYTHON) scripts/validate.py $(if $(filter 1,$(QUICK)),--quick) $(VALIDATE_ARGS)

@@ -3,10 +3,18 @@
 rank counts, measures each run's error against its reference and its wall-clock time, and writes
 doc/validation/README.md with a table per study, a comparison plot and an error-against-run-time
 plot (log-log, one line per scheme), plus results.csv beside it. Every number in the report is
-measured by this run (or read back from runs of an earlier invocation with --reuse).
+measured by this run (or read back from runs of an earlier invocation with --reuse, or with --only
+kept from the report in place).
 
 Usage: scripts/validate.py [--quick] [--only ID[,ID]] [--reuse] [--runs DIR] [--report DIR]
   --quick   the cheap rungs only (make validate QUICK=1, about 20 min on 2 cores)
+  --only    these studies only, and with a report already in --report, update it: their rows of
+            results.csv and their sections (with their plots) are replaced, the other studies'
+            sections are kept verbatim (in STUDIES order; a new study goes in at its place) and the
+            summary table is rebuilt from all rows. The header names the studies measured again, the
+            date and the commit; every section names the invocation, date and commit that measured
+            it. A chosen study that runs no rung (e.g. a study with fine rungs only, with --quick)
+            keeps its section.
   --coarsest  the first rung of each study only (the smoke test of make test)
   --reuse   keep runs that finished in an earlier invocation with the same case file and --set
             overrides (their recorded wall time is used); a rung whose overrides changed since is
@@ -23,6 +31,7 @@ import json
 import math
 import os
 import re
+import shlex
 import subprocess
 import sys
 import time
@@ -202,74 +211,137 @@ def git_commit():
         return "unknown"
 
 
-def full_ladder_estimate(results):
-    """A sentence with the expected wall time of the rungs not run, each scaled from the finest
-    run of its study and label as dx^-3 (particles x steps in 2D) and 1/ranks."""
+CSV_HEADER = ["study", "label", "dx", "np", "fluid", "wall", "steps", "wall_seconds", "error", "threshold", "verdict"]
+
+
+def csv_rows(study, rows):
+    """The results.csv rows (dicts keyed by CSV_HEADER, strings as csv reads them back) of a
+    study's measured rows."""
+    out = []
+    for row in rows:
+        r, rec = row["rung"], row["rec"]
+        out.append(dict(zip(CSV_HEADER, map(str, [
+            study["id"], r["label"], "%g" % r["dx"], r["np"], rec["fluid"], rec["wall_particles"], rec["steps"],
+            "%.2f" % rec["wall"], "%.6g" % row["err"], "%g" % study["threshold"],
+            verdict(row["err"], study["threshold"])]))))
+    return out
+
+
+def full_ladder_estimate(studies, table_rows):
+    """A sentence with the expected wall time of the rungs of studies not in table_rows (csv_rows),
+    each scaled from the finest run with an error of its study and label as dx^-3 (particles x
+    steps in 2D) and 1/ranks."""
     total, missing = 0.0, 0
-    for study, rows in results:
+    for study in studies:
+        own = [x for x in table_rows if x["study"] == study["id"]]
         for r in study["rungs"]:
-            if any(row["rung"] is r for row in rows):
+            if any((x["label"], x["dx"], x["np"]) == (r["label"], "%g" % r["dx"], str(r["np"])) for x in own):
                 continue
-            same = [row for row in rows if row["rung"]["label"] == r["label"] and row["rec"]["status"] == 0]
+            same = [x for x in own if x["label"] == r["label"] and math.isfinite(float(x["error"]))]
             if not same:
                 missing += 1
                 continue
-            m = min(same, key=lambda row: row["rung"]["dx"])
-            total += m["rec"]["wall"] * (m["rung"]["dx"] / r["dx"]) ** 3 * m["rung"]["np"] / r["np"]
+            m = min(same, key=lambda x: float(x["dx"]))
+            total += float(m["wall_seconds"]) * (float(m["dx"]) / r["dx"]) ** 3 * int(m["np"]) / r["np"]
     if total == 0 and missing == 0:
         return "Every rung of the ladder was run."
     return ("Expected wall time of the rungs of the full ladder not run here, scaled from the finest run "
             "of the same study and label as dx^-3 (particles x steps in 2D) and 1/ranks on this machine: "
             "about %.1f h%s." % (total / 3600, "" if not missing else
-                                 " (plus %d rungs whose coarser runs failed, not estimated)" % missing))
+                                 " (plus %d rungs whose coarser runs failed or were not run, not estimated)" % missing))
+
+
+def summary(table_rows):
+    """The summary table of the report: per study, the finest rung of its first label."""
+    md = ["| study | finest rung run | error | threshold | verdict |", "|---|---|---|---|---|"]
+    for study in STUDIES:
+        own = [x for x in table_rows if x["study"] == study["id"]]
+        if own:
+            last = min((x for x in own if x["label"] == own[0]["label"]), key=lambda x: float(x["dx"]))
+            md.append("| [%s](#%s) | %s, dx = %s | %.4g | %s | %s |" % (
+                study["id"], study["id"], last["label"], last["dx"], float(last["error"]), last["threshold"],
+                last["verdict"]))
+    return md
+
+
+def section(args, study, rows, stamp):
+    """The report section of a study from its measured rows (stamp: which invocation measured
+    them, when, at which commit); writes its two plots beside the report."""
+    comparison_plot(study, rows, os.path.join(args.report, study["id"] + "_comparison.png"))
+    error_time_plot(study, rows, os.path.join(args.report, study["id"] + "_cost.png"))
+    return "\n".join([
+        "## %s" % study["id"], "", study["title"] + ".", "", stamp, "",
+        "- case: `%s`" % ", ".join(sorted({case_path(study, row["rung"]) for row in rows})),
+        "- reference: %s" % study["reference"], "- error: %s; threshold %g" % (study["error"], study["threshold"]),
+        "", table(study, rows), "",
+        "![comparison](%s_comparison.png) ![error against run time](%s_cost.png)" % (study["id"], study["id"])])
+
+
+def read_report(folder):
+    """(sections by study id, results.csv rows) of the report in folder ({} and [] if none). A
+    section runs from its "## <id>" line to the next "## " heading; one written before sections
+    named their provenance gets the line from the report's header (its invocation, date, commit)."""
+    md, table_csv = os.path.join(folder, "README.md"), os.path.join(folder, "results.csv")
+    if not (os.path.exists(md) and os.path.exists(table_csv)):
+        return {}, []
+    header, *parts = re.split(r"^## ", open(md).read(), flags=re.M)
+    old = re.search(r"Generated by (.*?), on \d+ cores", header)
+    sections = {}
+    for part in parts:
+        lines = ("## " + part.rstrip("\n")).split("\n")
+        if old and not any(line.startswith("Measured by ") for line in lines):
+            lines[4:4] = ["Measured by %s." % old.group(1), ""]
+        sections[lines[0][3:].strip()] = "\n".join(lines)
+    with open(table_csv) as f:
+        return sections, list(csv.DictReader(f))
 
 
 def write_report(args, results, seconds):
-    """doc/validation/README.md and results.csv from the measured rows."""
+    """doc/validation/README.md and results.csv from the measured rows. With --only and a report
+    in place, only the measured studies' sections and rows are replaced; the other studies'
+    (read_report) are kept verbatim, in STUDIES order, and the summary is rebuilt from all rows."""
     os.makedirs(args.report, exist_ok=True)
-    runs_wall = sum({row["out"]: row["rec"]["wall"] for _, rows in results for row in rows}.values())
+    measured = {s["id"]: rows for s, rows in results if rows}
+    sections, kept = read_report(args.report) if args.only else ({}, [])
+    studies = [s for s in STUDIES if sections or any(s["id"] == c["id"] for c, _ in results)]
+    invocation = "`scripts/validate.py %s` on %s, commit `%s`" % (
+        shlex.join(sys.argv[1:]), datetime.datetime.utcnow().strftime("%Y-%m-%d %H:%M UTC"), git_commit())
+    table_rows, text = [], []
+    for study in studies:
+        if study["id"] in measured:
+            table_rows += csv_rows(study, measured[study["id"]])
+            text.append(section(args, study, measured[study["id"]], "Measured by %s." % invocation))
+        elif study["id"] in sections:
+            table_rows += [x for x in kept if x["study"] == study["id"]]
+            text.append(sections[study["id"]])
+    runs_wall = sum({row["out"]: row["rec"]["wall"] for rows in measured.values() for row in rows}.values())
+    if sections:
+        intro = ("Updated by %s, on %d cores (load average at the end %.1f): measured again %s (their runs "
+                 "took %.0f s of wall time, this invocation %.0f s); the other studies' sections are kept "
+                 "from earlier invocations, each section names the invocation, date and commit that measured "
+                 "it." % (invocation, os.cpu_count(), os.getloadavg()[0], ", ".join(measured) or "no study",
+                          runs_wall, seconds))
+    else:
+        intro = ("Generated by %s, on %d cores (load average at the end %.1f). The runs took %.0f s of wall "
+                 "time in all (this invocation %.0f s)." % (invocation, os.cpu_count(), os.getloadavg()[0],
+                                                            runs_wall, seconds))
     md = ["# Validation report", "",
-          "Generated by `make validate%s` (`scripts/validate.py%s`) on %s, commit `%s`, on %d cores "
-          "(load average at the end %.1f). The runs took %.0f s of wall time in all (this invocation "
-          "%.0f s). Do not edit by hand: every number below is measured by the runs. Each case "
-          "folder's README names its source and reference." % (
-              " QUICK=1" if args.quick else "", " --reuse" if args.reuse else "",
-              datetime.datetime.utcnow().strftime("%Y-%m-%d %H:%M UTC"), git_commit(), os.cpu_count(),
-              os.getloadavg()[0], runs_wall, seconds), "", full_ladder_estimate(results), "",
+          intro + " Do not edit by hand: every number below is measured by the runs. Each case folder's "
+          "README names its source and reference.", "", full_ladder_estimate(studies, table_rows), "",
           "The error is the study's metric against its reference; *verdict* compares it with the "
           "study's threshold. Wall time is that of `mpirun` including start-up; core-seconds = wall "
-          "time x ranks (this machine's ranks share 2 cores).", ""]
-    md += ["| study | finest rung run | error | threshold | verdict |", "|---|---|---|---|---|"]
-    for study, rows in results:
-        if rows:
-            last = min((x for x in rows if x["rung"]["label"] == rows[0]["rung"]["label"]),
-                       key=lambda x: x["rung"]["dx"])
-            md.append("| [%s](#%s) | %s, dx = %g | %.4g | %g | %s |" % (
-                study["id"], study["id"], last["rung"]["label"], last["rung"]["dx"], last["err"],
-                study["threshold"], verdict(last["err"], study["threshold"])))
-    table_rows = [["study", "label", "dx", "np", "fluid", "wall", "steps", "wall_seconds", "error", "threshold",
-                   "verdict"]]
-    for study, rows in results:
-        if not rows:
-            continue
-        md += ["", "## %s" % study["id"], "", study["title"] + ".", "",
-               "- case: `%s`" % ", ".join(sorted({case_path(study, row["rung"]) for row in rows})), "- reference: %s" % study["reference"],
-               "- error: %s; threshold %g" % (study["error"], study["threshold"]), "",
-               table(study, rows), "",
-               "![comparison](%s_comparison.png) ![error against run time](%s_cost.png)" % (study["id"], study["id"])]
-        comparison_plot(study, rows, os.path.join(args.report, study["id"] + "_comparison.png"))
-        error_time_plot(study, rows, os.path.join(args.report, study["id"] + "_cost.png"))
-        for row in rows:
-            r, rec = row["rung"], row["rec"]
-            table_rows.append([study["id"], r["label"], "%g" % r["dx"], r["np"], rec["fluid"], rec["wall_particles"],
-                               rec["steps"], "%.2f" % rec["wall"], "%.6g" % row["err"], "%g" % study["threshold"],
-                               verdict(row["err"], study["threshold"])])
-    md += ["", "## Commands", "", "Each rung's command line is in `%s/<study>/<rung>/validate.json`; "
-           "the full ladder runs with `make validate` (or `scripts/slurm/validate-sweep.sh` on a cluster)." % args.runs]
+          "time x ranks (this machine's ranks share 2 cores).", ""] + summary(table_rows)
+    for part in text:
+        md += ["", part]
+    md += ["", "## Commands", "", "Each rung's command line is in `<runs>/<study>/<rung>/validate.json`, <runs> "
+           "the `--runs` of the invocation its section names (default `runs/validate`); the full ladder runs "
+           "with `make validate` (or `scripts/slurm/validate-sweep.sh` on a cluster)."]
     with open(os.path.join(args.report, "README.md"), "w") as f:
         f.write("\n".join(md) + "\n")
     with open(os.path.join(args.report, "results.csv"), "w", newline="") as f:
-        csv.writer(f, lineterminator="\n").writerows(table_rows)
+        writer = csv.DictWriter(f, CSV_HEADER, lineterminator="\n")
+        writer.writeheader()
+        writer.writerows(table_rows)
 
 
 def main():

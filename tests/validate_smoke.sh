@@ -7,7 +7,8 @@
 # Then --reuse: a finished run is read back (its recorded wall time reported), also when it ran
 # with another launcher, and a run whose recorded case file and overrides are not the study's
 # current ones is run again (the dam-break front's rung, whose overrides hold a value with a
-# space, is read back).
+# space, is read back). And --only with a report in place: only the chosen study's section and
+# rows are replaced.
 set -eu
 cd "$(dirname "$0")/.."
 PYTHON=${PYTHON:-/usr/bin/python3}
@@ -30,6 +31,35 @@ for r in rows.values():
 drop = rows["oscillating-drop"]
 assert drop["verdict"] == "pass" and float(drop["error"]) <= 0.02, drop
 print("drop error %.4f of R, standing-wave period error %.4f" % (float(drop["error"]), float(rows["standing-wave-period"]["error"])))
+PY
+
+# --only updates a report in place: the drop, taken out of a copy of the report, is measured again
+# (read back with --reuse) and goes in at its STUDIES place; the other sections and rows are kept
+# verbatim, the summary has every study
+cp -r "$out/report" "$out/report3"
+"$PYTHON" - "$out/report3" <<'PY'
+import re, sys
+md, table = sys.argv[1] + "/README.md", sys.argv[1] + "/results.csv"
+text, lines = open(md).read(), open(table).readlines()
+open(md, "w").write(re.sub(r"## oscillating-drop\n.*?(?=## )", "", text, flags=re.S))
+open(table, "w").writelines(l for l in lines if not l.startswith("oscillating-drop,"))
+PY
+"$PYTHON" scripts/validate.py --coarsest --only oscillating-drop --reuse --runs "$out/runs" --report "$out/report3" \
+  > "$out/only.log"
+"$PYTHON" - "$out/report" "$out/report3" <<'PY'
+import csv, re, sys
+def parts(folder):
+    text = open(folder + "/README.md").read()
+    return {p.split("\n", 1)[0]: p for p in re.split(r"^## ", text, flags=re.M)[1:]}, text
+(before, _), (after, text) = parts(sys.argv[1]), parts(sys.argv[2])
+assert list(after) == ["oscillating-drop", "dambreak-front", "standing-wave-period", "Commands"], list(after)
+for kept in ("dambreak-front", "standing-wave-period"):
+    assert after[kept] == before[kept], kept
+assert "--only oscillating-drop" in after["oscillating-drop"] and "measured again oscillating-drop" in text
+rows = lambda folder: sorted(csv.reader(open(folder + "/results.csv")))
+assert rows(sys.argv[1]) == rows(sys.argv[2]), "results.csv differs"
+assert all("| [%s](#%s)" % (s, s) in text for s in after if s != "Commands")
+print("--only: the drop's section and rows put back in place, the others kept verbatim")
 PY
 
 # --reuse: the drop's record, given a marker wall time, is read back, not run again
