@@ -27,52 +27,33 @@
 
 #define TOL 1e-14
 
+/* The tank's case: a name, the domain's top y, the walls' items and the physics and output keys
+ * every case here shares. */
+#define TANK_CASE(name, top, walls)                                     \
+  "name: " name "\n"                                                    \
+  "dimension: 2\n"                                                      \
+  "resolution: {dx: 0.05}\n"                                            \
+  "time: {end: 1.0}\n"                                                  \
+  "domain: {min: [-0.3, -0.3], max: [1.3, " top "]}\n"                  \
+  "phases:\n"                                                           \
+  "  - {name: water, rho0: 1000, c0: 20, incompressible: true}\n"       \
+  "fluids:\n"                                                           \
+  "  - {phase: water, box: {min: [0, 0], max: [1, 0.5]}}\n"             \
+  "walls:\n" walls                                                      \
+  "physics: {wall_guard: 0.25, free_surface: off}\n"                    \
+  "output: {progress_interval: 1000}\n"
+
 static const char *fixed_case =
-    "name: wall-guard-test\n"
-    "dimension: 2\n"
-    "resolution: {dx: 0.05}\n"
-    "time: {end: 1.0}\n"
-    "domain: {min: [-0.3, -0.3], max: [1.3, 1.3]}\n"
-    "phases:\n"
-    "  - {name: water, rho0: 1000, c0: 20, incompressible: true}\n"
-    "fluids:\n"
-    "  - {phase: water, box: {min: [0, 0], max: [1, 0.5]}}\n"
-    "walls:\n"
-    "  - {box: {min: [0, 0], max: [1, 1]}, slip: free}\n"
-    "physics: {wall_guard: 0.25, free_surface: off}\n"
-    "output: {progress_interval: 1000}\n";
+    TANK_CASE("wall-guard-test", "1.3", "  - {box: {min: [0, 0], max: [1, 1]}, slip: free}\n");
 
 static const char *moving_case =
-    "name: wall-guard-moving\n"
-    "dimension: 2\n"
-    "resolution: {dx: 0.05}\n"
-    "time: {end: 1.0}\n"
-    "domain: {min: [-0.3, -0.3], max: [1.3, 1.5]}\n"
-    "phases:\n"
-    "  - {name: water, rho0: 1000, c0: 20, incompressible: true}\n"
-    "fluids:\n"
-    "  - {phase: water, box: {min: [0, 0], max: [1, 0.5]}}\n"
-    "walls:\n"
-    "  - {box: {min: [0, 0], max: [1, 1]}, slip: free,\n"
-    "     motion: {translation: {amplitude: [0, 0.1], period: 1.0}}}\n"
-    "physics: {wall_guard: 0.25, free_surface: off}\n"
-    "output: {progress_interval: 1000}\n";
+    TANK_CASE("wall-guard-moving", "1.5", "  - {box: {min: [0, 0], max: [1, 1]}, slip: free,\n"
+                                          "     motion: {translation: {amplitude: [0, 0.1], period: 1.0}}}\n");
 
 static const char *body_case =
-    "name: wall-guard-body\n"
-    "dimension: 2\n"
-    "resolution: {dx: 0.05}\n"
-    "time: {end: 1.0}\n"
-    "domain: {min: [-0.3, -0.3], max: [1.3, 1.3]}\n"
-    "phases:\n"
-    "  - {name: water, rho0: 1000, c0: 20, incompressible: true}\n"
-    "fluids:\n"
-    "  - {phase: water, box: {min: [0, 0], max: [1, 0.5]}}\n"
-    "walls:\n"
-    "  - {box: {min: [0, 0], max: [1, 1]}, slip: free}\n"
-    "  - {box: {min: [0.4, 0.6], max: [0.6, 0.7]}, fluid_side: outside, body: {mass: 4, inertia: 0.5}}\n"
-    "physics: {wall_guard: 0.25, free_surface: off}\n"
-    "output: {progress_interval: 1000}\n";
+    TANK_CASE("wall-guard-body", "1.3", "  - {box: {min: [0, 0], max: [1, 1]}, slip: free}\n"
+                                        "  - {box: {min: [0.4, 0.6], max: [0.6, 0.7]}, fluid_side: outside, "
+                                        "body: {mass: 4, inertia: 0.5}}\n");
 
 /* The first owned fluid particle (every rank owns some in these tests). */
 static long first_fluid(const struct engine *e) {
