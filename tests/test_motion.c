@@ -244,6 +244,22 @@ static void test_rigid_prescribe(void) {
   CHECK(y[RB_X] == 0.4 && y[RB_V] == -1 && rate[RB_V + 2] == law.a[2], "free x kept, z' from the law");
 }
 
+/* An impulse on a 3D body of mass 2 and principal moments (1, 2, 3) turned by 90 degrees about z
+ * (world inertia diag(2, 1, 3)), rotation about x fixed and z prescribed: J = (1, 2, 3) gives
+ * dV = (0.5, 1, 0), L = (2, 2, 3) gives d omega = I^-1 L = (1, 2, 1) with x held: (0, 2, 1). */
+static void test_rigid_impulse(void) {
+  struct body b = {.active = 1, .mass = 2, .inertia = {1, 2, 3}, .fixed = BODY_DOF_RX, .prescribed = BODY_DOF_Z};
+  double y[RB_STATE], h = sqrt(0.5), J[3] = {1, 2, 3}, L[3] = {2, 2, 3};
+  double dv[3] = {0.5, 1, 0}, dw[3] = {0, 2, 1};
+  rigid_initial(&b, y);
+  y[RB_Q] = h, y[RB_Q + 3] = h;
+  rigid_impulse(&b, 3, J, L, y);
+  for (int d = 0; d < 3; d++) {
+    CHECK_CLOSE(y[RB_V + d], dv[d], 1e-15, "3D impulse: J / M in the free translations");
+    CHECK_CLOSE(y[RB_W + d], dw[d], 1e-15, "3D impulse: I^-1 L in the free rotations (world inertia)");
+  }
+}
+
 /* The frame of a 3D body turned 0.7 rad about [1, 2, 2]/3 and spinning at w: it turns a body point
  * about the centre of mass by that rotation, and its velocity and acceleration are v + w x r and
  * a + alpha x r + w x (w x r). */
@@ -331,6 +347,7 @@ int main(void) {
   test_axis_3d();
   test_rigid_rates();
   test_rigid_prescribe();
+  test_rigid_impulse();
   test_rigid_frame();
   test_mass_properties();
   return check_report("test_motion");

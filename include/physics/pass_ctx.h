@@ -38,12 +38,13 @@ enum {
   FEAT_BODIES = 131072     /* rigid bodies: the fluid's pair forces on their ghosts (body loads) */
 };
 
-/** The force of one fluid particle's pair terms with the ghosts of one body: minus the particle's
- *  mass times the part of its du/dt those pairs make (action and reaction). */
 /** What a body load holds: the pair forces of a stage, the wall guard's removed acceleration of a
  *  stage (a contact force), or the wall guard's velocity correction after a step (an impulse). */
 enum body_load_source { LOAD_PAIRS = 0, LOAD_GUARD = 1, LOAD_GUARD_IMPULSE = 2 };
 
+/** The reaction on one body of what it did to one fluid particle: minus the particle's mass times
+ *  the part of its du/dt that body's ghost pairs (or the guard) make, or times the velocity the
+ *  guard took from it (action and reaction). */
 struct body_load {
   int64_t id;                      /* the fluid particle's id (the loads are summed in id order) */
   int wall;                        /* the body's wall index */
@@ -53,7 +54,8 @@ struct body_load {
   double force[3];                 /* on the body [N] (2D: [N/m]); an impulse [N s] (2D: [N s/m]) */
 };
 
-/** The body loads of a stage, appended by the rhs pass in any order. */
+/** The body loads of a stage (or of a step's wall guard), appended by the rhs pass and the wall
+ *  guard in any order. */
 struct body_loads {
   struct body_load *at;
   long n, cap;

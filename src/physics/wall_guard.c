@@ -62,20 +62,21 @@ static double normal_part(int dim, const double *n, const double *a, const doubl
   return s;
 }
 
-/* Subtract the negative part of component c along n from the field f at particle i; the change
- * made to it into change (zero when c >= 0). */
-static void remove_inward(double *const *f, long i, int dim, const double *n, double c, double *change) {
+/* Subtract the negative part of component c along n from the field f at particle i, the change
+ * into change; returns whether there was one (c < 0). */
+static int remove_inward(double *const *f, long i, int dim, const double *n, double c, double *change) {
+  if (!(c < 0)) return 0;
   for (int k = 0; k < dim; k++) {
-    change[k] = c < 0 ? -c * n[k] : 0.0;
-    if (c < 0) f[k][i] -= c * n[k];
+    change[k] = -c * n[k];
+    f[k][i] += change[k];
   }
+  return 1;
 }
 
 /* The reaction on wall w, if it is a rigid body, of the guard's change to particle i. */
 static void body_reaction(const struct pass_ctx *ctx, long i, int w, enum body_load_source source,
                           const double *change) {
-  if ((ctx->prm->body_walls >> w & 1) && (change[0] != 0 || change[1] != 0 || change[2] != 0))
-    body_load_append(ctx->loads, ctx->p, i, w, source, change);
+  if (ctx->prm->body_walls >> w & 1) body_load_append(ctx->loads, ctx->p, i, w, source, change);
 }
 
 /* The guard distance [m], 0 when the guard is off. */
@@ -93,10 +94,9 @@ void pass_wall_guard(struct pass_ctx *ctx) {
     for (int w = 0; w < ctx->c->n_walls; w++) {
       if (!near_wall(ctx, i, w, guard, n, u_wall, a_wall)) continue;
       for (int k = 0; k < dim; k++) v[k] = p->v[k][i], a[k] = ctx->w->dv[k][i];
-      if (normal_part(dim, n, v, u_wall) <= 0) {
-        remove_inward(ctx->w->dv, i, dim, n, normal_part(dim, n, a, a_wall), change);
+      if (normal_part(dim, n, v, u_wall) <= 0 &&
+          remove_inward(ctx->w->dv, i, dim, n, normal_part(dim, n, a, a_wall), change))
         body_reaction(ctx, i, w, LOAD_GUARD, change);
-      }
       if (!ctx->w->du[0]) continue;
       for (int k = 0; k < dim; k++) du[k] = ctx->w->du[k][i];
       remove_inward(ctx->w->du, i, dim, n, normal_part(dim, n, du, zero), change);
@@ -117,8 +117,7 @@ long wall_guard_apply(const struct pass_ctx *ctx) {
       for (int k = 0; k < dim; k++) v[k] = p->v[k][i];
       double un = normal_part(dim, n, v, u_wall);
       hits += un < 0;
-      remove_inward(p->v, i, dim, n, un, change);
-      body_reaction(ctx, i, w, LOAD_GUARD_IMPULSE, change);
+      if (remove_inward(p->v, i, dim, n, un, change)) body_reaction(ctx, i, w, LOAD_GUARD_IMPULSE, change);
     }
   }
   return hits;
