@@ -269,6 +269,12 @@ void engine_evaluate(struct engine *e, int skip_state_halo);
  *  recomputes), for every snapshot and probe row. Collective. */
 void engine_ghosts_now(struct engine *e);
 
+/** With the acoustic damper, the damper's divergence D of every owned and halo fluid particle
+ *  (work array div_own, or div with the symmetric and difference forms) at the current state,
+ *  wall ghosts first: what the pressure probes need to read the damper's stress. Outside the
+ *  timed pipeline; the next stage recomputes everything it touches. Collective. */
+void engine_damper_divergence_now(struct engine *e);
+
 /** Assemble the pipeline of passes and halo updates the case needs; allocate its arrays. On a
  *  re-assembly the operations that stay keep their accumulated time and pairs. */
 void engine_assemble(struct engine *e);

@@ -95,6 +95,9 @@ static inline const double *diffused_density(const struct pass_ctx *ctx) {
   return (ctx->prm->features & FEAT_SHEPARD) ? ctx->w->rho_s : ctx->p->rho;
 }
 
+/** The divergence the acoustic damper acts on: the own-phase one with that form, else <div u>. */
+static inline const double *damper_divergence(const struct work *w) { return w->div_own ? w->div_own : w->div; }
+
 /** Scheme same-phase-continuity, per stage: the Shepard pressure of every owned fluid particle
  *  over the fluid of all phases, itself included (paper 003 Eq. 26, AMB-003-2 of the notes) [Pa]. */
 void pass_shepard_pressure(struct pass_ctx *ctx);

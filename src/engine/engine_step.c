@@ -354,6 +354,21 @@ void engine_ghosts_now(struct engine *e) {
   }
 }
 
+void engine_damper_divergence_now(struct engine *e) {
+  unsigned f = e->prm.features;
+  if (!(f & FEAT_DAMPER)) return;
+  engine_ghosts_now(e);
+  struct physics_params prm = e->prm;   /* the divergences alone: no density gradient, no shifting */
+  prm.features &= ~(unsigned)(FEAT_DIFFUSION | FEAT_SHIFT);
+  struct pass_ctx ctx = engine_pass_ctx(e);
+  ctx.prm = &prm;
+  pass_volumes(&ctx);
+  pass_neighbour_lists(&ctx);
+  pass_gradients(&ctx);
+  double *fields[32];
+  halo_update(&e->halo, fields, halo_field_list(e, (f & FEAT_DAMPER_OWN_PHASE) ? HF_DIV_OWN : HF_DIV, fields));
+}
+
 double engine_shift_max(const struct engine *e) { return 0.5 * (ENGINE_CELL_SKIN - 1.0) * e->prm.kern.support; }
 
 /* |u_w|^2 of moving-wall ghost i at the current stage [m^2/s^2]. */

@@ -273,6 +273,7 @@ int engine_output(struct engine *e, int force) {
                e->last_probes_step != e->step;
   if ((snapshot || probes) && (e->prm.features & FEAT_SHEPARD) && e->step > 0)
     engine_ghosts_now(e);   /* delta-sph: write the Shepard pressure its forces use */
+  if (probes) engine_damper_divergence_now(e);   /* the pressure probes read the damper's stress */
   if (snapshot) {
     e->last_snapshot_step = e->step;
     if (write_snapshot(e)) return 3;

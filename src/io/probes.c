@@ -129,12 +129,19 @@ struct probe_sample {
   double colour;      /* sum W V over that phase */
 };
 
+/* The acoustic damper's stress -rho_j alpha2 c0 h D_j of slot j [Pa]: 0 without the damper, for
+ * gases and for wall ghosts (the pair sums of the damper give them none). */
+static double damper_stress(const struct pass_ctx *ctx, long j) {
+  double k_damp = part_has(ctx->p->phase[j], KIND_BOUNDARY) ? 0 : ctx->prm->damper_coef[1 + ctx->p->phase[j]];
+  return k_damp > 0 ? -k_damp * ctx->p->rho[j] * damper_divergence(ctx->w)[j] : 0.0;
+}
+
 /* Add slot j to the pressure moments around q->x (offsets in units of h). */
 static void add_pressure(void *arg, const struct pass_ctx *ctx, long j, double wv) {
   struct probe_sample *q = arg;
   double r[3] = {0, 0, 0};
   for (int d = 0; d < ctx->p->dim; d++) r[d] = (ctx->p->x[d][j] - q->x[d]) / ctx->prm->h;
-  probe_sums_add(&q->sums, r, wv, ctx->p->p[j]);
+  probe_sums_add(&q->sums, r, wv, ctx->p->p[j] + damper_stress(ctx, j));
 }
 
 /* Add slot j to the colour of the gauge's phase. */
@@ -144,7 +151,8 @@ static void add_colour(void *arg, const struct pass_ctx *ctx, long j, double wv)
 }
 
 /* The pressure [Pa] of probe p at x over the fluid and the wall ghosts (which carry the pressure
- * extrapolated across the wall, so that a sensor on the wall reads the wall pressure). */
+ * extrapolated across the wall, so that a sensor on the wall reads the wall pressure); with the
+ * acoustic damper, of p + its stress, the pressure the pair forces act with (doc/theory.md). */
 static double pressure_at(const struct pass_ctx *ctx, const struct probe *p, const double *x) {
   struct probe_sample q = {.x = x};
   probe_sums_init(&q.sums, ctx->p->dim);

@@ -65,7 +65,7 @@ static inline __attribute__((always_inline)) void fluid_sums(const struct pass_c
   const double *restrict du[3] = {w->du[0], w->du[1], w->du[2]};
   const double *restrict grad_rho[3] = {w->grad_rho[0], w->grad_rho[1], w->grad_rho[2]};
   const double *restrict rho = p->rho, *restrict pres = p->p, *restrict vol = w->vol;
-  const double *restrict div = w->div_own ? w->div_own : w->div;   /* the damper's D */
+  const double *restrict div = damper_divergence(w);   /* the damper's D */
   const int damp_other = !w->div_own;   /* the damper's sum includes other-phase pairs */
   const double *restrict rho_d = diffused_density(ctx);   /* the density the diffusion acts on */
   const int *restrict phase = p->phase;
