@@ -736,3 +736,124 @@ def wedge_velocity(run, dx, reference, v_entry=5.05, t_to_ms=40.0):
                                                         dev_sph)
     return np.max(np.abs(dev)) / v_entry, notes, {"t": 1000 * t, "v": v, "t_ref": t_exp, "v_ref": v_exp,
                                                    "t_sph": t_sph, "v_sph": v_sph}
+
+
+# --- slamming of an LNG insulation panel with dents (paper 000 section 3.3) ------------------
+
+def inside_polygon(points, polygon):
+    """Mask of the points (n x 2) strictly inside a closed polygon (k x 2), by ray casting."""
+    x, y = points[:, 0:1], points[:, 1:2]
+    x0, y0 = polygon[:, 0], polygon[:, 1]
+    x1, y1 = np.roll(x0, -1), np.roll(y0, -1)
+    crosses = (y0 > y) != (y1 > y)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        x_cut = x0 + (y - y0) * (x1 - x0) / (y1 - y0)
+    return np.sum(crosses & (x < x_cut), axis=1) % 2 == 1
+
+
+def panel_contact_time(run, gap):
+    """Time [s] at which the first body of a run has fallen by gap [m] (bodies.csv, linear
+    between rows): the lowest point of the panel, gap above the water at t = 0, reaches the
+    undisturbed surface (paper 000's t = 0); nan if it never does."""
+    rows = read_csv(os.path.join(run, "bodies.csv"))
+    y = next(name for name in rows if name.endswith("_y"))
+    drop = rows[y][0] - rows[y]
+    if drop[-1] < gap:
+        return float("nan")
+    return float(np.interp(gap, drop, rows["time"]))
+
+
+def panel_polygon_at(run, t):
+    """The panel (walls.1 polygon, k x 2) of a run moved by its body's displacement at time t [s]."""
+    polygon = np.array(read_config(run)["walls"][1]["polygon"], dtype=float)
+    rows = read_csv(os.path.join(run, "bodies.csv"))
+    y = next(name for name in rows if name.endswith("_y"))
+    return polygon + [0.0, np.interp(t, rows["time"], rows[y]) - rows[y][0]]
+
+
+def depth_inside(points, polygon):
+    """Distance [m] of each point to the nearest edge of a closed polygon (k x 2)."""
+    a, b = polygon, np.roll(polygon, -1, axis=0)
+    depth = np.full(len(points), np.inf)
+    for start, edge in zip(a, b - a):
+        f = np.clip((points - start) @ edge / (edge @ edge), 0.0, 1.0)
+        depth = np.minimum(depth, np.linalg.norm(points - start - f[:, None] * edge, axis=1))
+    return depth
+
+
+def pocket_air(s, polygon, dents):
+    """Air particles of snapshot s (read_snapshot) in the pocket between the panel's two dent tips:
+    x between the tips' inner edges, y between the higher tip and the face above it, outside the
+    panel. dents: indices of the polygon's vertices (left tip's right corner, right tip's left
+    corner, a vertex of the face between them)."""
+    left, right, face = polygon[list(dents)]
+    p = s["position"]
+    box = (p[:, 0] > left[0]) & (p[:, 0] < right[0]) & (p[:, 1] > max(left[1], right[1])) & (p[:, 1] < face[1])
+    return box & (s["phase"] == 1) & ~inside_polygon(p, polygon)
+
+
+def stray_air(s, dx, k=12):
+    """Number of air particles of snapshot s whose neighbours within 1.5 dx (the k nearest) are
+    all water, at least three of them: air carried into the water, the interface penetration
+    paper 000 adds the sharpness force against."""
+    from scipy.spatial import cKDTree
+    p, phase = s["position"], s["phase"]
+    air = np.where(phase == 1)[0]
+    dist, idx = cKDTree(p).query(p[air], k=k + 1, distance_upper_bound=1.5 * dx)
+    near = np.isfinite(dist[:, 1:])
+    water = np.zeros_like(near)
+    water[near] = phase[idx[:, 1:][near]] == 0
+    return int(np.sum((near.sum(axis=1) >= 3) & (water.sum(axis=1) == near.sum(axis=1))))
+
+
+def panel_snapshot_checks(run, dx, t_peak, dents):
+    """Over the snapshots: the fluid particles inside the panel (summed), the deepest of them [dx]
+    and the stray air particles (stray_air, summed); and the air particles in the pocket
+    (pocket_air) and their mean pressure [Pa] in the snapshot nearest t_peak [s]."""
+    inside = stray = 0
+    deepest = 0.0
+    best = (float("inf"), 0, float("nan"))
+    for path in snapshots(run):
+        t, s = read_snapshot(path)
+        polygon = panel_polygon_at(run, t)
+        within = inside_polygon(s["position"], polygon)
+        inside += int(within.sum())
+        if within.any():
+            deepest = max(deepest, float(depth_inside(s["position"][within], polygon).max()) / dx)
+        stray += stray_air(s, dx)
+        air = pocket_air(s, polygon, dents)
+        if abs(t - t_peak) < best[0]:
+            best = (abs(t - t_peak), int(air.sum()), float(s["pressure"][air].mean()) if air.any() else float("nan"))
+    return {"inside": inside, "deepest": deepest, "stray": stray, "pocket_air": best[1], "pocket_p": best[2]}
+
+
+def panel_slamming(run, dx, gap=0.02, window=(0.009, 0.014), t_after=0.03, pocket=("p40", "p47"),
+                   dents=(3, 6, 5)):
+    """The smoke test of notes seeds-000-001 section 3.3, as the number of its four criteria that
+    fail: (1) the run reaches t_after [s] after first contact (panel_contact_time with gap [m]);
+    (2) the largest pressure of the pocket probes falls in window [s] after contact; (3) an air
+    pocket forms: the snapshot nearest that maximum holds air between the dents (pocket_air) at a
+    mean pressure of at least half of it; (4) no interpenetration: no fluid particle inside the
+    panel and no stray air particle in the water (stray_air) in any snapshot."""
+    t0 = panel_contact_time(run, gap)
+    probes = read_csv(os.path.join(run, "probes.csv"))
+    t = probes["time"] - t0
+    after = t >= 0
+    peaks = {name: (probes[name][after].max(), t[after][np.argmax(probes[name][after])]) for name in probes
+             if name not in ("step", "time")}
+    p_max, t_max = max(peaks[name] for name in pocket)
+    c = panel_snapshot_checks(run, dx, t0 + t_max, dents)
+    checks = {"completes": t[-1] >= t_after - 1e-9, "window": window[0] <= t_max <= window[1],
+              "pocket": c["pocket_air"] > 0 and c["pocket_p"] >= 0.5 * p_max,
+              "no interpenetration": c["inside"] + c["stray"] == 0}
+    failed = [name for name, ok in checks.items() if not ok]
+    notes = "contact at t = %.2f ms; run to %.1f ms after it; pocket peak %.0f kPa at %.2f ms (window %g-%g ms); " \
+            "peaks %s; pocket at the peak: %d air particles, mean p %.0f kPa; fluid particles in the panel %d " \
+            "(deepest %.2f dx), stray air %d (all snapshots); failed: %s" % (
+                1000 * t0, 1000 * t[-1], p_max / 1000, 1000 * t_max, 1000 * window[0], 1000 * window[1],
+                ", ".join("%s %.0f kPa at %.2f ms" % (n, v / 1000, 1000 * w) for n, (v, w) in peaks.items()),
+                c["pocket_air"], c["pocket_p"] / 1000, c["inside"], c["deepest"], c["stray"],
+                ", ".join(failed) or "none")
+    curves = {"t": 1000 * t, "window": (1000 * window[0], 1000 * window[1]),
+              **{name: probes[name] / 1000 for name in peaks}}
+    return float(len(failed)), notes, curves

@@ -147,3 +147,15 @@ def wedge(ax, items):
     if items:
         c = items[-1][1]
         ax.plot(c["t_sph"], c["v_sph"], "k--", lw=0.8, label="Sun et al. 2015 SPH, dx = 2.5 mm")
+
+
+def panel(ax, items):
+    """Pressure at the pocket probes 40 (solid) and 47 (dashed) against time from first contact,
+    with the window of the pocket's pressure maximum (paper 000) shaded."""
+    for r, c in items:
+        line, = ax.plot(c["t"], c["p40"], "-", lw=0.8, label=_label(r) + " (p40; p47 dashed)")
+        ax.plot(c["t"], c["p47"], "--", lw=0.8, color=line.get_color())
+    if items:
+        ax.axvspan(*items[-1][1]["window"], color="0.85", label="pocket peak window (paper 000)")
+    ax.set_xlabel("t [ms] from first contact")
+    ax.set_ylabel("pressure [kPa]")

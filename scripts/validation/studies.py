@@ -350,3 +350,24 @@ STUDIES.append({
               rung(0.01, 2, label="delta-plus, no tensile control", **{"physics.tensile_control": "false"})],
     "plot": "wedge",
 })
+
+# paper 000's two-phase cases run with the acoustic damper (alpha2 = 10); the rungs without it
+# measure what it does to the impact (cases/panel-slamming/README.md)
+NO_DAMPER = {"physics.acoustic_damper": 0}
+STUDIES.append({
+    "id": "panel-slamming",
+    "case": "panel-slamming",
+    "title": "LNG insulation panel slamming, water and air (paper 000 section 3.3, geometry assumed)",
+    "length": ("L", 0.64),
+    "reference": "paper 000's description (no digitised data): the smoke test of notes seeds-000-001 section 3.3",
+    "error": "number of failed criteria of four: completes to 30 ms after contact; the largest pressure of "
+             "probes 40, 47 in 9-14 ms after contact; an air pocket (air between the dents at >= half that "
+             "pressure); no fluid particle inside the panel and no stray air in the water; threshold 0",
+    "threshold": 0,
+    "metric": metrics.panel_slamming,
+    # QUICK runs dx = 0.02 only (about 6 min on this loaded machine); the rest is for the Slurm array
+    "rungs": [rung(0.02, 2, True), rung(0.01, 2), rung(0.005, 2), rung(0.0025, 2), rung(0.002, 2),
+              rung(0.02, 2, label="delta-plus, no acoustic damper", **NO_DAMPER),
+              rung(0.01, 2, label="delta-plus, no acoustic damper", **NO_DAMPER)],
+    "plot": "panel",
+})
