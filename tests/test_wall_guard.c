@@ -7,8 +7,8 @@
  *     it is untouched; inside the floor's solid it loses the velocity that carries it deeper; near
  *     the left wall the normal is x; the number of corrections is counted;
  *  2. fixed tank, per stage (pass_wall_guard): the acceleration into the floor is removed for a
- *     particle at rest or approaching, kept for one moving away; the inward shifting velocity is
- *     removed in both cases;
+ *     particle at rest or approaching, kept for one moving away unless it would turn it within
+ *     the step (then cut to what stops it); the inward shifting velocity is removed in both cases;
  *  3. a tank moving up at 0.2 pi m/s (sinusoid at t = 0): the velocity relative to the floor is
  *     what counts, and the corrected particle moves with the floor; likewise the acceleration,
  *     relative to the floor's (zero at t = 0 for a sinusoid started at its zero);
@@ -114,6 +114,15 @@ static void fixed_tank(struct engine *e) {
   e->w.dv[1][i] = -50;
   guard_stage(e);
   CHECK(e->w.dv[1][i] == -50, "moving away: dv/dt_y = %g, want -50 (kept)", e->w.dv[1][i]);
+  e->prm.dt_step = 1e-3;   /* with a step: moving away at 1 m/s, at most 1000 m/s^2 back toward the floor */
+  e->w.dv[1][i] = -50;
+  guard_stage(e);
+  CHECK(e->w.dv[1][i] == -50, "moving away, slow turn: dv/dt_y = %g, want -50 (kept)", e->w.dv[1][i]);
+  e->w.dv[1][i] = -5000;
+  guard_stage(e);
+  CHECK(fabs(e->w.dv[1][i] + 1000) < 1e-9, "moving away, turning within the step: dv/dt_y = %g, want -1000",
+        e->w.dv[1][i]);
+  e->prm.dt_step = 0;
 }
 
 static void moving_tank(struct engine *e, const struct case_def *c) {

@@ -115,6 +115,8 @@ struct physics_params {
   double rho_min[CASE_MAX_PHASES]; /* global minimum density per phase (first stage) [kg/m^3] */
   double tv_pressure;              /* scheme riemann: background pressure of the transport velocity
                                       this step [Pa] */
+  double dt_step;                  /* the time step: this step's from its second stage on, the
+                                      previous step's in the first (0 before the first step) [s] */
 };
 
 /** What a pass reports back; zero when it starts, added up by the engine after it. */

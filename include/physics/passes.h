@@ -145,8 +145,9 @@ void pass_surface_tension(struct pass_ctx *ctx);
 
 /** Wall guard, after every force of the stage (src/physics/wall_guard.c): an owned fluid particle within
  *  physics.wall_guard x dx of a wall's boundary (or inside its solid) loses the part of du/dt
- *  (relative to the wall's acceleration) that points into the wall while it is not moving away
- *  from it, and the part of its shifting velocity that points into the wall. */
+ *  (relative to the wall's acceleration) that points into the wall, beyond what stops it within a
+ *  step when it is moving away (physics_params.dt_step), and the part of its shifting velocity
+ *  that points into the wall. */
 void pass_wall_guard(struct pass_ctx *ctx);
 
 /** Scheme riemann: 1 if phase ph is a light phase: a gas (not `incompressible`) and a phase with a

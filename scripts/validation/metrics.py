@@ -857,3 +857,64 @@ def panel_slamming(run, dx, gap=0.02, window=(0.009, 0.014), t_after=0.03, pocke
     curves = {"t": 1000 * t, "window": (1000 * window[0], 1000 * window[1]),
               **{name: probes[name] / 1000 for name in peaks}}
     return float(len(failed)), notes, curves
+
+
+# --- free-fall wedge with cavity pinch-off (paper 000 section 3.4) ------------------------------
+
+def enclosed_air_near(s, dx, x_axis, half_width, min_pocket=10):
+    """The enclosed air regions of snapshot data s (air regions other than the largest, the open
+    air) of at least min_pocket particles whose centre lies within half_width of x = x_axis:
+    a list of (particle indices, volume [m^3])."""
+    found = []
+    for idx, vol in air_regions(s, dx)[1:]:
+        if len(idx) >= min_pocket and abs(np.mean(s["position"][idx, 0]) - x_axis) <= half_width:
+            found.append((idx, vol))
+    return found
+
+
+def peaks(t, p, t_from, spacing):
+    """Local maxima (time, value) of p after t_from that are the largest within +-spacing [s]."""
+    out = []
+    for k in np.nonzero(t >= t_from)[0]:
+        near = np.abs(t - t[k]) <= spacing
+        if p[k] == np.max(p[near]) and p[k] > 0:
+            out.append((t[k], p[k]))
+    return out
+
+
+def wedge_pinch_off(run, dx, t_ref=0.352, breadth=0.166, t_slam=0.05, t_earliest=0.1):
+    """Wedge entry with cavity pinch-off: |t_pinch - t_ref| / t_ref, t_pinch the first snapshot
+    after t_earliest with enclosed air over the wedge (an air region besides the open air, its
+    centre within breadth/2 of the wedge's axis x = 0). Notes: the slamming peak of p1 (its
+    maximum over 0-t_slam), |p2| from t_slam to the pinch-off against it (the air layer rings
+    acoustically after the impact: cases/wedge-cavity-wang/README.md), p2's first and second peaks
+    after it and their spacing (the cavity's oscillation)."""
+    pr = read_csv(os.path.join(run, "probes.csv"))
+    t, p1, p2 = pr["time"], pr["p1"], pr["p2"]
+    t_pinch = float("nan")
+    for path in snapshots(run):
+        if snapshot_time(path) < t_earliest:
+            continue
+        ts, s = read_snapshot(path)
+        if enclosed_air_near(s, dx, 0.0, breadth / 2):
+            t_pinch = ts
+            break
+    slam = t <= t_slam
+    k1 = int(np.argmax(p1[slam]))
+    notes = "p1 slamming peak %.0f Pa at %.1f ms" % (p1[slam][k1], 1000 * t[slam][k1])
+    if not math.isfinite(t_pinch):
+        open_cavity = t > t_slam
+        if open_cavity.any():
+            notes += "; max |p2| over %.2f-%.3f s %.1f %% of it" % (
+                t_slam, t[-1], 100 * np.max(np.abs(p2[open_cavity])) / p1[slam][k1])
+        notes += "; no pinch-off by t = %.3f s (paper 000: %.3f s)" % (t[-1], t_ref)
+        return float("nan"), notes, {"t": t, "p1": p1, "p2": p2, "t_pinch": t_pinch}
+    open_cavity = (t > t_slam) & (t < t_pinch)
+    notes += "; max |p2| over %.2f s to the pinch-off %.1f %% of it; pinch-off at %.3f s (paper 000: %.3f s)" % (
+        t_slam, 100 * np.max(np.abs(p2[open_cavity])) / p1[slam][k1], t_pinch, t_ref)
+    top = peaks(t, p2, t_pinch - 0.01, 0.005)[:2]
+    if top:
+        notes += "; p2 peaks after it: " + ", ".join("%.0f Pa at %.3f s" % (v, tt) for tt, v in top)
+    if len(top) == 2:
+        notes += " (spacing %.1f ms)" % (1000 * (top[1][0] - top[0][0]))
+    return abs(t_pinch - t_ref) / t_ref, notes, {"t": t, "p1": p1, "p2": p2, "t_pinch": t_pinch}

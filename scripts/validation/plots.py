@@ -159,3 +159,16 @@ def panel(ax, items):
         ax.axvspan(*items[-1][1]["window"], color="0.85", label="pocket peak window (paper 000)")
     ax.set_xlabel("t [ms] from first contact")
     ax.set_ylabel("pressure [kPa]")
+
+
+def wedge_cavity(ax, items):
+    """Pressures p1 (wetted face, solid) and p2 (top face, facing the cavity, dashed) on the wedge
+    against time, the pinch-off marked, with paper 000's pinch-off time."""
+    for r, c in items:
+        line = ax.plot(c["t"], c["p1"], "-", lw=0.8, label=_label(r) + ", p1")[0]
+        ax.plot(c["t"], c["p2"], "--", lw=0.8, color=line.get_color(), label=_label(r) + ", p2")
+        if np.isfinite(c["t_pinch"]):
+            ax.axvline(c["t_pinch"], color=line.get_color(), lw=0.5)
+    ax.axvline(0.352, color="k", lw=0.6, ls=":", label="paper 000 pinch-off (0.352 s)")
+    ax.set_xlabel("t [s]")
+    ax.set_ylabel("pressure [Pa]")

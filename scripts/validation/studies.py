@@ -371,3 +371,22 @@ STUDIES.append({
               rung(0.01, 2, label="delta-plus, no acoustic damper", **NO_DAMPER)],
     "plot": "panel",
 })
+
+CAVITY_SLAM = {"time.end": 0.1}   # the slamming phase only: the quick rung's p1 peak and cost
+STUDIES.append({
+    "id": "wedge-cavity-wang",
+    "case": "wedge-cavity-wang",
+    "title": "Free-fall wedge entry with cavity pinch-off, water and air (paper 000 section 3.4, Wang et al. 2015 "
+             "set-up: 30 deg, D = 0.166 m, 32.3 kg/m, 0.92 m/s)",
+    "length": ("D", 0.166),
+    "reference": "paper 000's pinch-off time 0.352 s (its Fig. 18; no experimental series is stored)",
+    "error": "|t_pinch - 0.352 s| / 0.352 s, t_pinch the first snapshot (every 5 ms) with enclosed air over the "
+             "wedge; threshold 5 % (notes seeds-000-001 section 3.4)",
+    "threshold": 0.05,
+    "metric": metrics.wedge_pinch_off,
+    # D/dx = 12 is too coarse: the wedge is 3.5 dx tall and has no ghosts near its keel (README);
+    # D/dx whole keeps the lattice symmetric about the wedge's axis
+    "rungs": [rung(0.166 / 24, 2, True, label="delta-plus, to 0.1 s", **CAVITY_SLAM),
+              rung(0.166 / 24, 2), rung(0.166 / 48, 2), rung(0.166 / 96, 2)],
+    "plot": "wedge_cavity",
+})

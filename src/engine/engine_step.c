@@ -312,6 +312,7 @@ static void run_overlapped(struct engine *e, int k) {
 static int op_runs(const struct engine *e, int k) { return !e->ops[k].once_per_step || e->stage <= 0; }
 
 void engine_evaluate(struct engine *e, int skip_state_halo) {
+  e->prm.dt_step = e->dt;
   for (int k = skip_state_halo ? 1 : 0; k < e->n_ops; k++) {
     if (!op_runs(e, k)) continue;
     int overlap = e->n_ranks > 1 && !e->ops[k].pass && k + 1 < e->n_ops && e->ops[k + 1].cellwise &&
