@@ -576,6 +576,17 @@ def tank_displacement(path, x0_left):
     return x[ph < 0].min() - x0_left
 
 
+def tank_frame_snapshots(run):
+    """Each snapshot of a run whose tank moves as (time [s], fluid particles (read_snapshot), the
+    tank's horizontal displacement [m] (tank_displacement))."""
+    paths = snapshots(run)
+    with h5py.File(paths[0], "r") as f:
+        x0_left = f["particles/position"][:, 0][f["particles/phase"][:] < 0].min()
+    for path in paths:
+        t, s = read_snapshot(path)
+        yield t, s, tank_displacement(path, x0_left)
+
+
 def column_interface(s, x_gauge, dx, lower=0, base=0.10):
     """Elevation of the top of the lower phase above its rest level `base` at x_gauge: the lower
     phase's volume weighted by a hat function of half-width 2 dx centred on x_gauge, per unit of
@@ -597,14 +608,7 @@ def dominant_period(t, y, t_from):
 def sloshing_period(run, dx, period=0.830, gauges=(0.10, 0.47), t_from=1.66):
     """|T_SPH / T - 1| of the interface elevation at gauge WG2 (0.10 m from the left wall, in the
     tank's frame), T_SPH its dominant period after two forcing periods, T the forcing period."""
-    paths = snapshots(run)
-    with h5py.File(paths[0], "r") as f:
-        x0_left = f["particles/position"][:, 0][f["particles/phase"][:] < 0].min()
-    rows = []
-    for path in paths:
-        t, s = read_snapshot(path)
-        shift = tank_displacement(path, x0_left)
-        rows.append([t] + [column_interface(s, g + shift, dx) for g in gauges])
+    rows = [[t] + [column_interface(s, g + shift, dx) for g in gauges] for t, s, shift in tank_frame_snapshots(run)]
     rows = np.array(rows)
     periods = [dominant_period(rows[:, 0], rows[:, 1 + k], t_from) for k in range(len(gauges))]
     notes = "dominant period WG2 %.4f s, WG1 %.4f s (forcing %.3f s); interface amplitude WG2 %.1f mm" % (
@@ -918,3 +922,102 @@ def wedge_pinch_off(run, dx, t_ref=0.352, breadth=0.166, t_slam=0.05, t_earliest
     if len(top) == 2:
         notes += " (spacing %.1f ms)" % (1000 * (top[1][0] - top[0][0]))
     return abs(t_pinch - t_ref) / t_ref, notes, {"t": t, "p1": p1, "p2": p2, "t_pinch": t_pinch}
+
+
+# --- sloshing with an entrapped air pocket (paper 000 section 3.6, after Luo et al. 2016) ---------
+
+POCKET_PROBES = ("p_w2", "p_w3", "p_w1", "p_a1")
+
+
+def air_phase(config):
+    """Index of the gas phase (the lightest) of a resolved case."""
+    return int(np.argmin([p["rho0"] for p in config["phases"]]))
+
+
+def left_tank_air(config, x_split):
+    """True when the case puts air left of x_split (variant #1: air over the open tank's water)."""
+    air = config["phases"][air_phase(config)]["name"]
+    return any(f["phase"] == air and "box" in f and f["box"]["min"][0] < x_split for f in config["fluids"])
+
+
+def pocket_series(run, x_split):
+    """Time [s], volume V = sum m/rho [m^2], reference volume V0 = sum m/rho0 and particle count of
+    the air right of x_split in the tank's frame (the closed tank's pocket), per snapshot."""
+    config = read_config(run)
+    air = air_phase(config)
+    rho0 = config["phases"][air]["rho0"]
+    rows = []
+    for t, s, shift in tank_frame_snapshots(run):
+        sel = (s["phase"] == air) & (s["position"][:, 0] - shift > x_split)
+        rows.append([t, np.sum(s["mass"][sel] / s["density"][sel]), np.sum(s["mass"][sel]) / rho0, sel.sum()])
+    return np.array(rows)
+
+
+def adiabatic_pressure(config, volume, volume0):
+    """The gauge pressure of a gas volume compressed adiabatically from volume0 at p = p_b, by the
+    gas phase's equation of state: B [(V0/V)^gamma - 1] + p_b, B = rho0 c0^2 / gamma [Pa]."""
+    gas = config["phases"][air_phase(config)]
+    bulk = gas["rho0"] * gas["c0"] ** 2 / gas["gamma"]
+    return bulk * ((volume0 / volume) ** gas["gamma"] - 1) + gas.get("p_background", 0.0)
+
+
+def rms_over_range(a, b):
+    """RMS of a - b over the range (max - min) of b."""
+    return float(np.sqrt(np.mean((a - b) ** 2)) / (np.max(b) - np.min(b)))
+
+
+def pocket_partner(run, dx, x_split):
+    """The probes (read_csv) of the other variant's run beside this one at the same dx that reached
+    the latest time (a sibling folder whose name holds _dx<dx>_ and whose case has, or lacks, the
+    left tank's air), or None."""
+    own = left_tank_air(read_config(run), x_split)
+    best = None
+    for other in glob.glob(os.path.join(os.path.dirname(os.path.abspath(run)), "*_dx%g_np*" % dx)):
+        path = os.path.join(other, "probes.csv")
+        if os.path.exists(path) and left_tank_air(read_config(other), x_split) != own:
+            probes = read_csv(path)
+            if best is None or probes["time"][-1] > best["time"][-1]:
+                best = probes
+    return best
+
+
+def air_pocket(run, dx, x_split, window=(5.0, 12.0), rel=0.05, corr=0.9):
+    """Sloshing with an entrapped air pocket: the worst of the acceptance errors of notes section
+    3.6 that the run allows, each a fraction with the bar `rel`:
+    (a) the pocket's air against adiabatic compression: RMS(p_ad - p_a1) / range(p_a1) over the
+        snapshots to window[1], p_ad = B [(V0/V)^1.4 - 1] with V = sum m/rho of the air right of
+        x_split (tank frame), p_a1 the probe at the snapshot's time;
+    (b) p_a1 and p_w1 in phase: (1 - r) / 2 over the window, r their correlation (rel at r = corr
+        when rel = (1 - corr) / 2);
+    (c) variants #1 and #2 agree: the largest RMS(p_1 - p_2) / range(p_2) of the four probes over
+        the window, from the other variant's run at the same dx (pocket_partner).
+    (b) and (c) need runs reaching window[1] (not available, n.a., otherwise)."""
+    config = read_config(run)
+    probes = read_csv(os.path.join(run, "probes.csv"))
+    t, t_end = probes["time"], probes["time"][-1]
+    pocket = pocket_series(run, x_split)
+    upto = pocket[:, 0] <= window[1] + 1e-9
+    p_ad = adiabatic_pressure(config, pocket[upto, 1], pocket[upto, 2])
+    p_a1 = np.interp(pocket[upto, 0], t, probes["p_a1"])
+    errors = {"adiabatic": rms_over_range(p_ad, p_a1)}
+    notes = ["adiabatic %.4f (max |p_ad - p_a1| %.1f Pa, p_a1 range %.1f Pa, %d snapshots to %.2f s; pocket "
+             "particles %d to %d)" % (errors["adiabatic"], np.max(np.abs(p_ad - p_a1)), np.ptp(p_a1), upto.sum(),
+                                      pocket[upto, 0][-1], pocket[:, 3].min(), pocket[:, 3].max())]
+    if t_end < window[1] - 1e-9:
+        notes.append("phase and variant agreement n.a. (the run ends at %.2f s, before %g s)" % (t_end, window[1]))
+    else:
+        win = (t >= window[0]) & (t <= window[1] + 1e-9)
+        r = float(np.corrcoef(probes["p_a1"][win], probes["p_w1"][win])[0, 1])
+        errors["phase"] = (1 - r) / 2 * rel / ((1 - corr) / 2)
+        notes.append("phase %.4f (correlation p_a1-p_w1 %.4f over %g-%g s)" % (errors["phase"], r, *window))
+        other = pocket_partner(run, dx, x_split)
+        if other is None or other["time"][-1] < window[1] - 1e-9:
+            notes.append("variant agreement n.a. (no run of the other variant to %g s beside this one)" % window[1])
+        else:
+            each = {n: rms_over_range(np.interp(t[win], other["time"], other[n]), probes[n][win]) for n in POCKET_PROBES}
+            errors["variants"] = max(each.values())
+            notes.append("variants %.4f (%s)" % (errors["variants"], ", ".join("%s %.4f" % kv for kv in each.items())))
+    err = max(errors.values())
+    notes.insert(0, "worst: %s" % max(errors, key=errors.get))
+    return err, "; ".join(notes), {"t": t, "p_a1": probes["p_a1"], "p_w1": probes["p_w1"],
+                                   "t_snap": pocket[upto, 0], "p_ad": p_ad}

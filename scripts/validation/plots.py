@@ -172,3 +172,14 @@ def wedge_cavity(ax, items):
     ax.axvline(0.352, color="k", lw=0.6, ls=":", label="paper 000 pinch-off (0.352 s)")
     ax.set_xlabel("t [s]")
     ax.set_ylabel("pressure [Pa]")
+
+
+def air_pocket(ax, items):
+    """Pressure of the entrapped pocket at p_a1 (solid) and that of adiabatic compression of its
+    air's volume at the snapshots (dots), and the water pressure p_w1 beside it (dashed)."""
+    for r, c in items:
+        line = ax.plot(c["t"], c["p_a1"], "-", lw=0.8, label=_label(r) + ", p_a1")[0]
+        ax.plot(c["t_snap"], c["p_ad"], ".", ms=3, color=line.get_color())
+        ax.plot(c["t"], c["p_w1"], "--", lw=0.6, color=line.get_color())
+    ax.set_xlabel("t [s]")
+    ax.set_ylabel("p [Pa] (dots: adiabatic from volume)")

@@ -390,3 +390,32 @@ STUDIES.append({
               rung(0.166 / 24, 2), rung(0.166 / 48, 2), rung(0.166 / 96, 2)],
     "plot": "wedge_cavity",
 })
+
+# variant #1 of paper 000 section 3.6: air over the open left tank's water too, up to 0.408 m with
+# a free surface (the tank's lid at 0.51 m is out of reach), so that it stays at the atmosphere's
+# pressure (cases/air-pocket-sloshing/README.md); the case file is variant #2
+POCKET_V1 = {"fluids.4": "{phase: air, box: {min: [0, 0.17], max: [0.85, 0.408]}}"}
+POCKET_V1_LABEL = "delta-plus, #1 air over the left tank"
+POCKET_V2_LABEL = "delta-plus, #2 free surface in the left tank"
+POCKET_QUICK = {"time.end": 0.6}   # the start of the 5 s ramp: the 5-12 s criteria are n.a.
+STUDIES.append({
+    "id": "air-pocket-sloshing",
+    "case": "air-pocket-sloshing",
+    "title": "Sloshing with an entrapped air pocket (paper 000 section 3.6; geometry assumed)",
+    "length": ("d", 0.17),
+    "reference": "internal consistency (notes section 3.6): adiabatic compression of the pocket's volume, "
+                 "p_a1 in phase with p_w1, variants #1 and #2 alike; Luo et al.'s records are not available",
+    "error": "the worst of RMS(p_ad - p_a1)/range(p_a1) (pocket volume against adiabatic compression, to 12 s), "
+             "(1 - r)/2 of p_a1 and p_w1 over 5-12 s (0.05 at r = 0.9), and RMS(p_#1 - p_#2)/range of p_w2, p_w3, "
+             "p_w1, p_a1 over 5-12 s; the last two n.a. for runs ending before 12 s; threshold 5 % (notes)",
+    "threshold": 0.05,
+    "metric": functools.partial(metrics.air_pocket, x_split=0.918),   # the partition's middle, tank frame
+    # quick: 0.6 s on 1 rank (a folder of its own); full: 12 s, ~1.8e5 steps at dx = 0.017 m, 8x and
+    # 64x that work at 0.0085 and 0.00425 m
+    "rungs": [rung(0.017, 1, True, label=POCKET_V2_LABEL + ", to 0.6 s", **POCKET_QUICK),
+              rung(0.017, 1, True, label=POCKET_V1_LABEL + ", to 0.6 s", **POCKET_QUICK, **POCKET_V1),
+              rung(0.017, 2, label=POCKET_V2_LABEL), rung(0.017, 2, label=POCKET_V1_LABEL, **POCKET_V1),
+              rung(0.0085, 4, label=POCKET_V2_LABEL), rung(0.0085, 4, label=POCKET_V1_LABEL, **POCKET_V1),
+              rung(0.00425, 16, label=POCKET_V2_LABEL), rung(0.00425, 16, label=POCKET_V1_LABEL, **POCKET_V1)],
+    "plot": "air_pocket",
+})
