@@ -273,7 +273,6 @@ int engine_output(struct engine *e, int force) {
                e->last_probes_step != e->step;
   if ((snapshot || probes) && (e->prm.features & FEAT_SHEPARD) && e->step > 0)
     engine_ghosts_now(e);   /* delta-sph: write the Shepard pressure its forces use */
-  if (probes) engine_damper_divergence_now(e);   /* the pressure probes read the damper's stress */
   if (snapshot) {
     e->last_snapshot_step = e->step;
     if (write_snapshot(e)) return 3;
@@ -291,6 +290,7 @@ int engine_output(struct engine *e, int force) {
   }
   if (probes) {
     e->last_probes_step = e->step;
+    engine_damper_divergence_now(e);   /* the pressure probes read the damper's stress */
     probes_write_row(e, e->probes.f);
     if (e->rank == 0) status |= end_row(e, &e->probes);
     rows = 1;
