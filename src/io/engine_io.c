@@ -290,7 +290,6 @@ int engine_output(struct engine *e, int force) {
   }
   if (probes) {
     e->last_probes_step = e->step;
-    engine_damper_divergence_now(e);   /* the pressure probes read the damper's stress */
     probes_write_row(e, e->probes.f);
     if (e->rank == 0) status |= end_row(e, &e->probes);
     rows = 1;

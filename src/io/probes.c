@@ -230,6 +230,13 @@ static void print_probe(FILE *f, const struct engine *e, const struct probe *p, 
   }
 }
 
+/* Whether the case has a pressure sensor (the only probe that reads the damper's stress). */
+static int reads_pressure(const struct case_def *c) {
+  for (int k = 0; k < c->n_probes; k++)
+    if (c->probes[k].kind == PROBE_PRESSURE) return 1;
+  return 0;
+}
+
 void probes_write_row(struct engine *e, FILE *f) {
   const struct case_def *c = e->c;
   int total = 0, n[CASE_MAX_PROBES];
@@ -240,6 +247,7 @@ void probes_write_row(struct engine *e, FILE *f) {
     e->probe_buf_len = total;
   }
   double *buf = e->probe_buf;
+  if (reads_pressure(c)) engine_damper_divergence_now(e);   /* the sensors read the damper's stress */
   const struct pass_ctx ctx = engine_pass_ctx(e);   /* the interpolation's view of the particles */
   memset(buf, 0, (size_t)total * sizeof(double));
   for (int k = 0, at = 0; k < c->n_probes; at += n[k++]) {
