@@ -15,7 +15,7 @@
  * K_i = alpha h c0 rho0 + 2(dim+2) mu, mu_ij = 2 mu_i mu_j/(mu_i + mu_j), s_i = -1 (tensile control: p_i < 0 outside the free-surface
  * region) else +1, D = <div u>. eps/phi: interface.c.
  * The terms a case does not use are compiled out of its loop (see dispatch()). With rigid bodies,
- * the same sums over the ghosts of each body alone give the body loads (the force on the body). */
+ * the same sums over the ghosts of each body alone (pressure pairs symmetric) give the body loads. */
 #include <math.h>
 #include "physics/interface.h"
 #include "physics/passes.h"
@@ -226,18 +226,22 @@ static void finish(struct pass_ctx *ctx, const struct centre *ci, const struct f
 }
 
 /* The body loads of fluid particle i: for each body, its sums over that body's ghosts alone (the
- * same pair terms as its du/dt), times -m_i; none for a body without ghosts among its
- * neighbours. One generic (not specialised) loop: it runs only in scenes with bodies. */
+ * same pair terms as its du/dt, but with the symmetric pressure pairs p_k + p_i whatever tensile
+ * control does to i: the load approximates the surface integral of p, doc/theory.md section 5b),
+ * times -m_i; none for a body without ghosts among its neighbours. One generic (not specialised)
+ * loop: it runs only in scenes with bodies. */
 static __attribute__((noinline)) void add_body_loads(struct pass_ctx *ctx, const struct centre *ci,
                                                      const struct neighbours *nb, const struct terms *t) {
+  struct centre symmetric = *ci;
+  symmetric.p_sign = 1.0;
   for (int w = 0; w < ctx->c->n_walls; w++) {
     if (!(ctx->prm->body_walls >> w & 1)) continue;
     struct fluid_sums s;
     long n_pairs = 0;
     double acc[3];
-    fluid_sums(ctx, ci, nb, &s, &n_pairs, ctx->p->dim, t->du, t->damp, t->phases, t->diss, w);
+    fluid_sums(ctx, &symmetric, nb, &s, &n_pairs, ctx->p->dim, t->du, t->damp, t->phases, t->diss, w);
     if (n_pairs == 0) continue;
-    pair_acceleration(ctx, ci, &s, acc);
+    pair_acceleration(ctx, &symmetric, &s, acc);
     body_load_append(ctx->loads, ctx->p, ci->i, w, LOAD_PAIRS, acc);
   }
 }
