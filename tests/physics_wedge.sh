@@ -2,10 +2,10 @@
 # test-cores: 1
 # Free-fall wedge water entry (cases/wedge-entry-yettou) at B/dx = 120 over the first 10 ms: the
 # wedge's velocity follows Yettou et al.'s experiment within 3 % of the entry velocity 5.05 m/s
-# (measured 2.2 %; the validation study's metric over 0-10 ms instead of 0-40 ms). A body force
-# of the wrong size shows here (measured at this resolution): c0 = 100 m/s gives 6.6 %, no
-# density diffusion 5.8 % (cases/wedge-entry-yettou/README.md). At B/dx = 60 the same 10 ms are
-# 4.0 % off since the wall guard's reaction reaches the body (1.4 % before, when it was lost).
+# (measured 2.1 %; the validation study's metric over 0-10 ms instead of 0-40 ms). A body force
+# of the wrong size shows here (measured at this resolution, with the body's symmetric pressure
+# pairs): c0 = 100 m/s gives 3.9 %, no density diffusion 3.4 % (cases/wedge-entry-yettou/README.md).
+# At B/dx = 60 the same 10 ms are 3.9 % off.
 set -eu
 cd "$(dirname "$0")/.."
 PYTHON=${PYTHON:-/usr/bin/python3}
