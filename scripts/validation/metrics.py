@@ -1021,3 +1021,51 @@ def air_pocket(run, dx, x_split, window=(5.0, 12.0), rel=0.05, corr=0.9):
     notes.insert(0, "worst: %s" % max(errors, key=errors.get))
     return err, "; ".join(notes), {"t": t, "p_a1": probes["p_a1"], "p_w1": probes["p_w1"],
                                    "t_snap": pocket[upto, 0], "p_ad": p_ad}
+
+
+# --- 3D dam break against a box obstacle (Kleefsman et al. 2005, SPHERIC test 2) ------------
+
+KLEEFSMAN_GAUGES = ("H1", "H2", "H3", "H4")
+
+
+def gauge_rms(probes, ref, gauges, t_to, depth):
+    """Per gauge, the RMS over the reference's samples with t <= t_to of (H_SPH - H_exp) / depth,
+    H_SPH the probes.csv column linear in time, a dry gauge (nan: no water on its line) read as 0;
+    and the number of samples. probes and ref: dicts of columns (ref: t_s and NAME_m, as floats)."""
+    use = ref["t_s"] <= t_to + 1e-9
+    t_exp = ref["t_s"][use]
+    each = {}
+    for g in gauges:
+        h_sph = np.interp(t_exp, probes["time"], np.nan_to_num(probes[g], nan=0.0))
+        each[g] = math.sqrt(np.mean(((h_sph - ref[g + "_m"][use]) / depth) ** 2))
+    return each, int(use.sum())
+
+
+def peak_in(t, p, window):
+    """The largest p with window[0] <= t <= window[1], and its t; (nan, nan) when no sample is in it."""
+    use = (t >= window[0]) & (t <= window[1])
+    if not use.any():
+        return math.nan, math.nan
+    k = int(np.argmax(p[use]))
+    return float(p[use][k]), float(t[use][k])
+
+
+def kleefsman_dambreak(run, dx, reference, depth=0.55, t_to=6.0, impact=(0.3, 0.7)):
+    """3D dam break against a box: the RMS over the gauges H1-H4 and the experiment's samples in
+    0 to min(t_to, the run's end) of (H_SPH - H_exp) / depth (the column height), each gauge
+    weighted by its samples alike. Notes: the RMS of each gauge, and the peak of P1 in the
+    window `impact` [s] (the first impact on the box) against the experiment's."""
+    probes = read_csv(os.path.join(run, "probes.csv"))
+    ref = {k: v.astype(float) for k, v in read_reference(reference).items()}
+    t_end = min(t_to, probes["time"][-1])
+    each, n = gauge_rms(probes, ref, KLEEFSMAN_GAUGES, t_end, depth)
+    err = math.sqrt(np.mean([e ** 2 for e in each.values()]))
+    p_sph, t_sph = peak_in(probes["time"], probes["P1"], impact)
+    p_exp, t_exp = peak_in(ref["t_s"], ref["P1_Pa"], impact)
+    notes = "%d samples per gauge to %.2f s; RMS / H: %s; P1 peak in %g-%g s %.0f Pa at %.3f s (experiment %.0f Pa " \
+            "at %.3f s)" % (n, t_end, ", ".join("%s %.4f" % kv for kv in each.items()), *impact, p_sph, t_sph,
+                            p_exp, t_exp)
+    curves = {"t": probes["time"], "t_ref": ref["t_s"], "P1": probes["P1"], "P1_ref": ref["P1_Pa"]}
+    for g in KLEEFSMAN_GAUGES:
+        curves[g], curves[g + "_ref"] = probes[g], ref[g + "_m"]
+    return err, notes, curves

@@ -183,3 +183,20 @@ def air_pocket(ax, items):
         ax.plot(c["t"], c["p_w1"], "--", lw=0.6, color=line.get_color())
     ax.set_xlabel("t [s]")
     ax.set_ylabel("p [Pa] (dots: adiabatic from volume)")
+
+
+def kleefsman(ax, items):
+    """Water heights at the gauges H1-H4 against time, each rung in its colour (H1 solid, H2
+    dashed, H3 dash-dotted, H4 dotted), with the experiment in the same styles in black."""
+    styles = dict(zip(metrics.KLEEFSMAN_GAUGES, ("-", "--", "-.", ":")))
+    for r, c in items:
+        color = None
+        for g, ls in styles.items():
+            color = ax.plot(c["t"], c[g], ls, lw=0.8, color=color, label=_label(r) if g == "H1" else None)[0].get_color()
+    if items:
+        c = items[-1][1]
+        for g, ls in styles.items():
+            ax.plot(c["t_ref"], c[g + "_ref"], ls, lw=0.5, color="k", label="Kleefsman et al. 2005 (H1-H4)" if g == "H1" else None)
+    ax.set_xlim(0, max(c["t"][-1] for _, c in items) if items else 6.0)
+    ax.set_xlabel("t [s]")
+    ax.set_ylabel("water height [m] (H1 -, H2 --, H3 -., H4 :)")
