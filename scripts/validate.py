@@ -227,13 +227,21 @@ def csv_rows(study, rows):
     return out
 
 
+def case_dimension(study):
+    """The dimension (2 or 3) the study's case file states."""
+    with open(case_path(study)) as f:
+        found = re.search(r"^dimension:\s*(\d)", f.read(), re.M)
+    return int(found.group(1)) if found else 2
+
+
 def full_ladder_estimate(studies, table_rows):
     """A sentence with the expected wall time of the rungs of studies not in table_rows (csv_rows),
-    each scaled from the finest run with an error of its study and label as dx^-3 (particles x
-    steps in 2D) and 1/ranks."""
+    each scaled from the finest run with an error of its study and label as dx^-(dim + 1)
+    (particles x steps) and 1/ranks."""
     total, missing = 0.0, 0
     for study in studies:
         own = [x for x in table_rows if x["study"] == study["id"]]
+        exponent = case_dimension(study) + 1
         for r in study["rungs"]:
             if any((x["label"], x["dx"], x["np"]) == (r["label"], "%g" % r["dx"], str(r["np"])) for x in own):
                 continue
@@ -242,11 +250,11 @@ def full_ladder_estimate(studies, table_rows):
                 missing += 1
                 continue
             m = min(same, key=lambda x: float(x["dx"]))
-            total += float(m["wall_seconds"]) * (float(m["dx"]) / r["dx"]) ** 3 * int(m["np"]) / r["np"]
+            total += float(m["wall_seconds"]) * (float(m["dx"]) / r["dx"]) ** exponent * int(m["np"]) / r["np"]
     if total == 0 and missing == 0:
         return "Every rung of the ladder was run."
     return ("Expected wall time of the rungs of the full ladder not run here, scaled from the finest run "
-            "of the same study and label as dx^-3 (particles x steps in 2D) and 1/ranks on this machine: "
+            "of the same study and label as dx^-3 in 2D and dx^-4 in 3D (particles x steps) and 1/ranks on this machine: "
             "about %.1f h%s." % (total / 3600, "" if not missing else
                                  " (plus %d rungs whose coarser runs failed or were not run, not estimated)" % missing))
 
