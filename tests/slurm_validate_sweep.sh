@@ -9,17 +9,18 @@ cd "$(dirname "$0")/.."
 PYTHON=${PYTHON:-/usr/bin/python3}
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
-mkdir "$out/bin"
-cat > "$out/bin/sbatch" <<SH
+stand_ins=$out/stand-ins   # a directory put first on PATH
+mkdir "$stand_ins"
+cat > "$stand_ins/sbatch" <<SH
 #!/usr/bin/env bash
 printf '%s\n' "\$*" >> "$out/calls"
 echo 42
 SH
-chmod +x "$out/bin/sbatch"
+chmod +x "$stand_ins/sbatch"
 fail=0
 check() {   # check OPTIONS...: one sweep against --list for the same options
   : > "$out/calls"
-  PATH="$out/bin:$PATH" PYTHON=$PYTHON scripts/slurm/validate-sweep.sh "$@" > /dev/null
+  PATH="$stand_ins:$PATH" PYTHON=$PYTHON scripts/slurm/validate-sweep.sh "$@" > /dev/null
   local list n ranks array
   list=$("$PYTHON" scripts/validate.py --list "$@")
   n=$(printf '%s\n' "$list" | grep -c .)
