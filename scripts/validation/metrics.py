@@ -842,9 +842,7 @@ def panel_slamming(run, dx, gap=0.02, window=(0.009, 0.014), t_after=0.03, pocke
     t0 = panel_contact_time(run, gap)
     probes = read_csv(os.path.join(run, "probes.csv"))
     t = probes["time"] - t0
-    after = t >= 0
-    peaks = {name: (probes[name][after].max(), t[after][np.argmax(probes[name][after])]) for name in probes
-             if name not in ("step", "time")}
+    peaks = {name: peak_in(t, probes[name], (0, math.inf)) for name in probes if name not in ("step", "time")}
     p_max, t_max = max(peaks[name] for name in pocket)
     c = panel_snapshot_checks(run, dx, t0 + t_max, dents)
     checks = {"completes": t[-1] >= t_after - 1e-9, "window": window[0] <= t_max <= window[1],
@@ -876,6 +874,15 @@ def enclosed_air_near(s, dx, x_axis, half_width, min_pocket=10):
     return found
 
 
+def peak_in(t, p, window):
+    """The largest p with window[0] <= t <= window[1], and its t; (nan, nan) when no sample is in it."""
+    use = (t >= window[0]) & (t <= window[1])
+    if not use.any():
+        return math.nan, math.nan
+    k = int(np.argmax(p[use]))
+    return float(p[use][k]), float(t[use][k])
+
+
 def peaks(t, p, t_from, spacing):
     """Local maxima (time, value) of p after t_from that are the largest within +-spacing [s]."""
     out = []
@@ -903,19 +910,18 @@ def wedge_pinch_off(run, dx, t_ref=0.352, breadth=0.166, t_slam=0.05, t_earliest
         if enclosed_air_near(s, dx, 0.0, breadth / 2):
             t_pinch = ts
             break
-    slam = t <= t_slam
-    k1 = int(np.argmax(p1[slam]))
-    notes = "p1 slamming peak %.0f Pa at %.1f ms" % (p1[slam][k1], 1000 * t[slam][k1])
+    p1_peak, t1_peak = peak_in(t, p1, (-math.inf, t_slam))
+    notes = "p1 slamming peak %.0f Pa at %.1f ms" % (p1_peak, 1000 * t1_peak)
     if not math.isfinite(t_pinch):
         open_cavity = t > t_slam
         if open_cavity.any():
             notes += "; max |p2| over %.2f-%.3f s %.1f %% of it" % (
-                t_slam, t[-1], 100 * np.max(np.abs(p2[open_cavity])) / p1[slam][k1])
+                t_slam, t[-1], 100 * np.max(np.abs(p2[open_cavity])) / p1_peak)
         notes += "; no pinch-off by t = %.3f s (paper 000: %.3f s)" % (t[-1], t_ref)
         return float("nan"), notes, {"t": t, "p1": p1, "p2": p2, "t_pinch": t_pinch}
     open_cavity = (t > t_slam) & (t < t_pinch)
     notes += "; max |p2| over %.2f s to the pinch-off %.1f %% of it; pinch-off at %.3f s (paper 000: %.3f s)" % (
-        t_slam, 100 * np.max(np.abs(p2[open_cavity])) / p1[slam][k1], t_pinch, t_ref)
+        t_slam, 100 * np.max(np.abs(p2[open_cavity])) / p1_peak, t_pinch, t_ref)
     top = peaks(t, p2, t_pinch - 0.01, 0.005)[:2]
     if top:
         notes += "; p2 peaks after it: " + ", ".join("%.0f Pa at %.3f s" % (v, tt) for tt, v in top)
@@ -1039,15 +1045,6 @@ def gauge_rms(probes, ref, gauges, t_to, depth):
         h_sph = np.interp(t_exp, probes["time"], np.nan_to_num(probes[g], nan=0.0))
         each[g] = math.sqrt(np.mean(((h_sph - ref[g + "_m"][use]) / depth) ** 2))
     return each, int(use.sum())
-
-
-def peak_in(t, p, window):
-    """The largest p with window[0] <= t <= window[1], and its t; (nan, nan) when no sample is in it."""
-    use = (t >= window[0]) & (t <= window[1])
-    if not use.any():
-        return math.nan, math.nan
-    k = int(np.argmax(p[use]))
-    return float(p[use][k]), float(t[use][k])
 
 
 def kleefsman_dambreak(run, dx, reference, depth=0.55, t_to=6.0, impact=(0.3, 0.7)):
