@@ -26,11 +26,16 @@ expect 0 "usage" -- build/mpsph --help
 expect 0 "^mpsph " -- build/mpsph --version
 expect 0 "^\| \`physics.delta\` \| number" -- build/mpsph keys
 expect 0 "# particles: 625 fluid" -- build/mpsph check "$case"
-expect 0 "# memory: about [0-9.]+ MB per rank on 1 rank \(1117 particles with the halo at 440 bytes" -- build/mpsph check "$case"
-# --ranks N: the estimate per rank for N ranks (a share and its halo), check only, N a whole number.
-expect 0 "# memory: about [0-9.]+ MB per rank on 8 ranks \(439 particles with the halo" -- build/mpsph check "$case" --ranks 8
-expect 0 "# memory: about [0-9.]+ MB per rank on 4 ranks \(11872 particles with the halo" -- \
-  build/mpsph check "$case" --set resolution.dx=0.005 --ranks 4
+expect 0 "# memory: about [0-9.]+ MB per rank on 1 rank, 1 per node \(the rank needing the most: 625 fluid, 492 wall and 0 halo" -- build/mpsph check "$case"
+# --ranks N: the estimate per rank for N ranks (a share and its halo), check only, N a whole number;
+# --ranks-per-node K: how many share a node (default N, at most this machine's processors).
+expect 0 "# memory: about [0-9.]+ MB per rank on 8 ranks, 1 per node \(the rank needing the most: 0 fluid, 154 wall and 310 halo" -- \
+  build/mpsph check "$case" --ranks 8 --ranks-per-node 1
+expect 0 "# memory: about [0-9.]+ MB per rank on 4 ranks, 4 per node \(the rank needing the most: 8410 fluid, 3572 wall and 1026 halo" -- \
+  build/mpsph check "$case" --set resolution.dx=0.005 --ranks 4 --ranks-per-node 4
+expect 1 "^mpsph: --ranks-per-node: got 5, expected at most the 4 ranks of --ranks" -- \
+  build/mpsph check "$case" --ranks 4 --ranks-per-node 5
+expect 1 "^mpsph: --ranks-per-node: only with check" -- build/mpsph run "$case" --ranks-per-node 2
 expect 1 "^mpsph: --ranks: got '0', expected a whole number of ranks from 1" -- build/mpsph check "$case" --ranks 0
 expect 1 "^mpsph: --ranks: got '2x'" -- build/mpsph check "$case" --ranks 2x
 expect 1 "^mpsph: --ranks: given twice" -- build/mpsph check "$case" --ranks 2 --ranks 3

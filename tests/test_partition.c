@@ -1,16 +1,24 @@
 /* test_partition.c — METIS partition of the cell graph: every cell gets exactly one valid part,
- * every part gets cells, the weights are balanced within 10 %; fewer cells than parts is an error. */
+ * every part gets cells, the work is balanced within 10 % and the particles within 15 %; fewer
+ * cells than parts is an error. */
 #include <stdlib.h>
 #include <string.h>
 #include "check.h"
 #include "parallel/partition.h"
 
+/* Partition g into n_parts with cells of random particles: in the left half of the cells wall
+ * ghosts (2 work units each), in the right half fluid (8 units), so that the work alone would
+ * give a left rank about four times the particles of a right one. */
 static void check_parts(const struct grid *g, int n_parts, unsigned seed) {
-  int64_t *w = malloc(g->n_cells * sizeof(int64_t));
+  int64_t *w = malloc(g->n_cells * PARTITION_CONSTRAINTS * sizeof(int64_t));
   int *owner = malloc(g->n_cells * sizeof(int)), *count = calloc(n_parts, sizeof(int));
   char err[256];
   srand(seed);
-  for (long c = 0; c < g->n_cells; c++) w[c] = 1 + rand() % 64;   /* particles per cell */
+  for (long c = 0; c < g->n_cells; c++) {
+    int64_t n = 1 + rand() % 64, wall = c % g->n[0] < g->n[0] / 2;
+    w[c * PARTITION_CONSTRAINTS + WEIGHT_PARTICLES] = wall ? 4 * n : n;
+    w[c * PARTITION_CONSTRAINTS + WEIGHT_WORK] = 8 * n;
+  }
   int status = partition_cells(g, w, n_parts, MPI_COMM_WORLD, owner, err, sizeof(err));
   CHECK(status == 0, "%d parts: partition failed: %s", n_parts, err);
   long valid = 0;
@@ -21,8 +29,10 @@ static void check_parts(const struct grid *g, int n_parts, unsigned seed) {
     }
   CHECK(valid == g->n_cells, "%d parts: %ld of %ld cells have a valid owner", n_parts, valid, g->n_cells);
   for (int r = 0; r < n_parts; r++) CHECK(count[r] > 0, "%d parts: part %d got no cell", n_parts, r);
-  double imb = partition_imbalance(g, w, owner, n_parts);
-  CHECK(imb <= 0.10, "%d parts: weight imbalance %.3f > 0.10", n_parts, imb);
+  double work = partition_imbalance(g, w, WEIGHT_WORK, owner, n_parts);
+  double particles = partition_imbalance(g, w, WEIGHT_PARTICLES, owner, n_parts);
+  CHECK(work <= 0.10, "%d parts: work imbalance %.3f > 0.10", n_parts, work);
+  CHECK(particles <= 0.15, "%d parts: particle imbalance %.3f > 0.15", n_parts, particles);
   free(w);
   free(owner);
   free(count);
@@ -39,7 +49,7 @@ int main(int argc, char **argv) {
   check_parts(&g3, 4, 5u);
   check_parts(&g3, 7, 6u);
   grid_init(&tiny, 2, lo, hi, 0.3);   /* 3 x 1 cells */
-  int64_t w[3] = {1, 1, 1};
+  int64_t w[3 * PARTITION_CONSTRAINTS] = {1, 1, 1, 1, 1, 1};
   int owner[3];
   char err[256] = "";
   CHECK(partition_cells(&tiny, w, 4, MPI_COMM_WORLD, owner, err, sizeof(err)) == 1, "4 parts of 3 cells refused");

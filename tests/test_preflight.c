@@ -35,26 +35,48 @@ static void check_bounds(void) {
   }
 }
 
+/* Particles of each kind: n fluid and n / 4 wall ghosts. */
+static const double *kinds_of(double n) {
+  static double n_kind[KIND_COUNT];
+  n_kind[KIND_FLUID] = n;
+  n_kind[KIND_WALL] = n / 4;
+  return n_kind;
+}
+
+static double owned(const struct mem_estimate *m) { return m->owned[KIND_FLUID] + m->owned[KIND_WALL]; }
+
 static void check_estimate(void) {
   struct case_def c;
   char err[1024];
   CHECK(case_load(CASES[2], 0, NULL, &c, err, sizeof err) == 0, "%s", err);
   double support = 3 * c.h_over_dx * c.dx;
-  struct mem_estimate one = mem_estimate_rank(&c, support, 1e6, 1);
-  CHECK(one.particles == 1e6, "one rank holds every particle and no halo: %g", one.particles);
-  CHECK(one.total == one.process + one.cells + one.startup + 1e6 * one.bytes_per_particle, "total");
-  CHECK(one.startup > 0, "the start-up rows are counted: %g", one.startup);
-  CHECK(one.cells > 0 && one.bytes_per_particle == 440, "cells %g", one.cells);
-  struct mem_estimate four = mem_estimate_rank(&c, support, 1e6, 4);
-  CHECK(four.particles > 2.5e5 && four.particles < 5e5, "a quarter plus a halo: %g", four.particles);
-  struct mem_estimate two = mem_estimate_rank(&c, support, 1e6, 2);
-  CHECK((two.particles - 5e5) / 5e5 < (four.particles - 2.5e5) / 2.5e5,
-        "a half borders one rank, a quarter two: halo fractions %g, %g", two.particles / 5e5 - 1,
-        four.particles / 2.5e5 - 1);
-  CHECK(four.process == one.process + 4e6, "MPI's buffers on several ranks: %g", four.process);
-  struct mem_estimate small = mem_estimate_rank(&c, support, 100, 4);
-  CHECK(small.particles <= 100, "the halo is at most the other ranks' particles: %g",
-        small.particles);
+  struct mem_estimate one = mem_estimate_rank(&c, support, kinds_of(1e6), 1, 1);
+  CHECK(one.owned[KIND_FLUID] == 1e6 && one.owned[KIND_WALL] == 2.5e5 && one.halo == 0,
+        "one rank holds every particle and no halo: %g fluid, %g wall, %g halo", one.owned[KIND_FLUID],
+        one.owned[KIND_WALL], one.halo);
+  CHECK(one.total == one.process + one.cells + one.startup + one.particle_bytes, "total");
+  CHECK(one.startup > 0 && one.cells > 0, "the start-up rows and the cells are counted: %g, %g", one.startup,
+        one.cells);
+  struct mem_estimate four = mem_estimate_rank(&c, support, kinds_of(1e6), 4, 4);
+  /* the largest rank: within the partition's tolerances (3 % of the mean work, 10 % of the mean
+     particles), at least the mean share */
+  double work = 8 * four.owned[KIND_FLUID] + 2 * four.owned[KIND_WALL];
+  CHECK(work <= 1.03 * (8e6 + 2 * 2.5e5) / 4 * (1 + 1e-9) && owned(&four) <= 1.10 * 1.25e6 / 4 * (1 + 1e-9),
+        "the largest rank: %g fluid, %g wall", four.owned[KIND_FLUID], four.owned[KIND_WALL]);
+  CHECK(owned(&four) >= 1.25e6 / 4, "at least a mean share: %g fluid, %g wall", four.owned[KIND_FLUID],
+        four.owned[KIND_WALL]);
+  CHECK(four.halo > 0 && four.halo < owned(&four), "a halo band: %g", four.halo);
+  struct mem_estimate two = mem_estimate_rank(&c, support, kinds_of(1e6), 2, 2);
+  CHECK(two.halo / owned(&two) < four.halo / owned(&four),
+        "a half borders one rank, a quarter two: halo fractions %g, %g", two.halo / owned(&two),
+        four.halo / owned(&four));
+  struct mem_estimate spread = mem_estimate_rank(&c, support, kinds_of(1e6), 4, 1);
+  CHECK(four.process > spread.process && spread.process > one.process,
+        "MPI's memory on several ranks, more with more ranks on the node: %g, %g, %g", one.process,
+        spread.process, four.process);
+  struct mem_estimate small = mem_estimate_rank(&c, support, kinds_of(100), 4, 4);
+  CHECK(owned(&small) + small.halo <= 125, "the halo is at most the other ranks' particles: %g",
+        owned(&small) + small.halo);
 }
 
 static void check_available(void) {

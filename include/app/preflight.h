@@ -15,10 +15,11 @@
 int preflight_run(const struct case_def *c, const char *outdir, const char *restart, MPI_Comm comm);
 
 /** The check command: print the resolved case, the particle counts and the memory estimate per
- *  rank for a run on n_ranks ranks (mem_estimate.h), allocating no particle. A case whose bound
+ *  rank for a run on n_ranks ranks, per_node of them on each node (0: n_ranks, at most this
+ *  machine's processors) (mem_estimate.h), allocating no particle. A case whose bound
  *  needs more than COUNT_GUARD times this machine's memory per rank, or has more than
  *  COUNT_MAX_NODES lattice nodes to visit (minutes of counting), is not counted; its bound is
  *  printed instead. Returns 0, or 1 when particle generation refuses the case. */
-int preflight_check(const struct case_def *c, int n_ranks);
+int preflight_check(const struct case_def *c, int n_ranks, int per_node);
 
 #endif

@@ -27,7 +27,7 @@ struct parts {
 
 /* ---- the particle field table: one entry per array (or array per component) of struct parts ---- */
 
-enum part_type { PART_DOUBLE, PART_INT, PART_INT64 };
+enum part_type { PART_DOUBLE, PART_INT, PART_INT64, N_PART_TYPES };
 
 /* The operations that carry a field beyond those that carry every field of the table (allocation
  * and growth, parts_free, parts_bytes, parts_copy_one and the sort's permutation). */

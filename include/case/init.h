@@ -88,6 +88,9 @@ int init_particles(const struct case_def *c, double support, struct parts *p,
  *  when beyond a double). */
 double init_visit_count(const struct case_def *c, double support);
 
+/** The wall ghost candidates' part of init_visit_count: a bound on the wall ghosts. */
+double init_wall_visit_count(const struct case_def *c, double support);
+
 /** Initial gauge pressure [Pa] at x balancing the body forces: with uniform gravity the exact
  *  weight of the fluid regions above x; with a potential or a linear initial velocity field,
  *  integrated along the direction of the balancing acceleration. */

@@ -9,6 +9,7 @@
 #include "io/io_hdf5.h"
 #include "physics/pass_ctx.h"
 #include "parallel/nlist.h"
+#include "parallel/partition.h"
 #include "base/parts.h"
 #include "parallel/proxy.h"
 #include "parallel/space.h"
@@ -230,6 +231,12 @@ int engine_halo_layers(const struct case_def *c, const struct grid *g, double su
  *  around the owned ghosts' mirror points. */
 int engine_halo_band(const struct case_def *c, int halo_layers);
 
+/** Add a particle of kind `kind` in fine cell `cell` to the partition weights of its top cell
+ *  (PARTITION_CONSTRAINTS values per top cell, parallel/partition.h). */
+void engine_weight_add(const struct engine *e, int64_t *weight, long cell, enum part_kind kind);
+/** Sum the partition weights of all ranks onto rank 0, where every top cell gets one more of
+ *  each, so that empty cells still count. */
+void engine_weights_reduce(const struct engine *e, int64_t *weight);
 /** Partition the top cells with METIS by `weight` (one per top cell, read on rank 0) and adopt
  *  the result in the space. Returns 0, or 1 with a message on rank 0. Collective. */
 int engine_adopt_partition(struct engine *e, const int64_t *weight);

@@ -1,5 +1,6 @@
 /* proxy.h — halo exchange with neighbouring ranks: one proxy per neighbouring rank holding the
- * cells this rank sends to it, the particles it receives, buffers and requests. */
+ * cells this rank sends to it, the particles it receives, buffers and requests. Halo messages
+ * are received in place (MPI datatypes over the particle arrays' halo slots). */
 #ifndef MPSPH_PROXY_H
 #define MPSPH_PROXY_H
 
@@ -15,8 +16,10 @@ struct proxy {
   long *send_index;       /* owned slots sent, in (cell, id) order */
   long send_index_cap;
   long recv_first;        /* first halo slot of the received particles */
-  double *send_buf, *recv_buf;
-  long send_cap, recv_cap;   /* buffer capacities in doubles */
+  MPI_Datatype pick[N_PART_TYPES];   /* the elements send_index of an array of each element type */
+  int has_picks;
+  double *send_buf, *recv_buf;       /* packed values: halo updates (sent), migration */
+  long send_cap, recv_cap;           /* buffer capacities in doubles */
 };
 
 struct halo {
@@ -61,9 +64,8 @@ void halo_update_begin(struct halo *h, double *const *fields, int n_fields);
  *  work that overlaps it. */
 void halo_update_progress(struct halo *h);
 
-/** Finish a halo update begun with the same fields: wait and copy the received values into the
- *  halo slots. */
-void halo_update_end(struct halo *h, double *const *fields, int n_fields);
+/** Finish a halo update: wait for its messages (received in place into the halo slots). */
+void halo_update_end(struct halo *h);
 
 /** Send owned particles whose cell now belongs to another rank to that rank (a neighbour) and
  *  append the particles received. Returns the id of a particle that moved beyond the

@@ -14,13 +14,14 @@
 static const char *usage =
     "usage:\n"
     "  mpirun -n N mpsph run CASE.yaml [-o OUTDIR] [--set key.path=value ...] [--restart [FILE]]\n"
-    "  mpsph check CASE.yaml [--set key.path=value ...] [--ranks N]\n"
+    "  mpsph check CASE.yaml [--set key.path=value ...] [--ranks N [--ranks-per-node K]]\n"
     "  mpsph keys\n"
     "  mpsph --help | --version\n"
     "\n"
     "run    runs the case; output goes to OUTDIR (default runs/<case name>)\n"
     "check  validates the case, prints the resolved case, the particle counts and the memory per\n"
-    "       rank of a run on N ranks (default 1), without generating the particles\n"
+    "       rank of a run on N ranks (default 1) with K of them on each node (default: N, at most\n"
+    "       this machine's processors), without generating the particles\n"
     "keys   prints the reference of the case keys (a markdown table)\n"
     "--set  overrides any key of the case file, e.g. --set resolution.dx=0.005 --set time.end=0.5\n"
     "--restart  continues from FILE (default OUTDIR/checkpoint.h5), on any number of ranks\n"
@@ -34,19 +35,21 @@ struct args {
   int n_sets;
   char **sets;                /* the --set values, room for every argument */
   long ranks;                 /* check --ranks N, else 0 */
+  long ranks_per_node;        /* check --ranks-per-node K, else 0 */
 };
 
 #define MAX_RANKS 100000000L  /* check --ranks: the largest rank count it takes */
 
-/* --ranks N: a whole number in [1, MAX_RANKS], once. Returns 0, or 1 with a message in err. */
-static int set_ranks(struct args *a, const char *value, char *err, size_t len) {
+/* Option `name` (--ranks, --ranks-per-node) N: a whole number in [1, MAX_RANKS], once, into
+ * *count. Returns 0, or 1 with a message in err. */
+static int set_count(const char *name, long *count, const char *value, char *err, size_t len) {
   char *end;
   long n = strtol(value, &end, 10);
-  if (a->ranks) return snprintf(err, len, "--ranks: given twice, expected it once"), 1;
+  if (*count) return snprintf(err, len, "%s: given twice, expected it once", name), 1;
   if (!*value || *end || n < 1 || n > MAX_RANKS)
-    return snprintf(err, len, "--ranks: got '%s', expected a whole number of ranks from 1 to %ld",
+    return snprintf(err, len, "%s: got '%s', expected a whole number of ranks from 1 to %ld", name,
                     value, MAX_RANKS), 1;
-  a->ranks = n;
+  *count = n;
   return 0;
 }
 
@@ -73,12 +76,15 @@ static int parse_args(int argc, char **argv, struct args *a, char *err, size_t l
   if (argc < 2) return snprintf(err, len, "no command given\n%s", usage), 1;
   a->command = argv[1];
   for (int k = 2; k < argc; k++) {
-    if (!strcmp(argv[k], "-o") || !strcmp(argv[k], "--set") || !strcmp(argv[k], "--ranks")) {
+    if (!strcmp(argv[k], "-o") || !strcmp(argv[k], "--set") || !strcmp(argv[k], "--ranks") ||
+        !strcmp(argv[k], "--ranks-per-node")) {
       const char *value = option_value(argc, argv, k++, err, len);
       if (!value) return 1;
       if (!strcmp(argv[k - 1], "--set")) a->sets[a->n_sets++] = argv[k];
       else if (!strcmp(argv[k - 1], "--ranks")) {
-        if (set_ranks(a, value, err, len)) return 1;
+        if (set_count("--ranks", &a->ranks, value, err, len)) return 1;
+      } else if (!strcmp(argv[k - 1], "--ranks-per-node")) {
+        if (set_count("--ranks-per-node", &a->ranks_per_node, value, err, len)) return 1;
       } else if (set_outdir(a, value, err, len)) return 1;
     } else if (!strcmp(argv[k], "--restart")) {
       if (a->restart) return snprintf(err, len, "--restart: given twice, expected it once"), 1;
@@ -95,8 +101,12 @@ static int parse_args(int argc, char **argv, struct args *a, char *err, size_t l
   if (!a->case_path) return snprintf(err, len, "%s needs a case file\n%s", a->command, usage), 1;
   if ((a->restart || a->outdir) && strcmp(a->command, "run"))
     return snprintf(err, len, "%s: only with run\n%s", a->restart ? "--restart" : "-o", usage), 1;
-  if (a->ranks && strcmp(a->command, "check"))
-    return snprintf(err, len, "--ranks: only with check (run takes its ranks from mpirun)\n%s", usage), 1;
+  if ((a->ranks || a->ranks_per_node) && strcmp(a->command, "check"))
+    return snprintf(err, len, "%s: only with check (run takes its ranks from mpirun)\n%s",
+                    a->ranks ? "--ranks" : "--ranks-per-node", usage), 1;
+  if (a->ranks_per_node > (a->ranks ? a->ranks : 1))
+    return snprintf(err, len, "--ranks-per-node: got %ld, expected at most the %ld rank%s of --ranks",
+                    a->ranks_per_node, a->ranks ? a->ranks : 1, a->ranks > 1 ? "s" : ""), 1;
   return 0;
 }
 
@@ -143,6 +153,7 @@ int main(int argc, char **argv) {
   if (argc == 2 && (!strcmp(argv[1], "--help") || !strcmp(argv[1], "-h"))) return printf("%s", usage), 0;
   if (argc == 2 && !strcmp(argv[1], "--version")) return printf("mpsph %s\n", MPSPH_VERSION), 0;
   if (argc == 2 && !strcmp(argv[1], "keys")) return case_keys_markdown(stdout), 0;
+  mem_setup();
   MPI_Init(&argc, &argv);
   setvbuf(stdout, NULL, _IOLBF, 0);   /* progress shows up in batch logs as it is printed */
   int rank, status;
@@ -154,7 +165,7 @@ int main(int argc, char **argv) {
   if (!status) status = case_load(a.case_path, a.n_sets, a.sets, &c, err, sizeof(err));
   if (!status) status = supported(&c, err, sizeof(err));
   if (status && rank == 0) fprintf(stderr, "mpsph: %s\n", err);
-  if (!status) status = !strcmp(a.command, "check") ? (rank == 0 ? preflight_check(&c, a.ranks ? (int)a.ranks : 1) : 0) : run_case(&c, &a);
+  if (!status) status = !strcmp(a.command, "check") ? (rank == 0 ? preflight_check(&c, a.ranks ? (int)a.ranks : 1, (int)a.ranks_per_node) : 0) : run_case(&c, &a);
   free(a.sets);
   MPI_Finalize();
   return status;

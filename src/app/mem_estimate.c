@@ -1,14 +1,16 @@
 /* mem_estimate.c — memory per rank of a run, from a model of the layout of issue 22, and memory
- * available on a node. The constants were measured with the peak resident size that the
- * end-of-run summary prints (engine_report.c), 5 steps of runs: between two resolutions of the
- * same case on one rank, 424 bytes per particle in 2D (the two-phase dam break, 4.4e4 and
- * 1.7e5 particles) and 676 in 3D (the tests' 3D dam break, 7.2e3 and 7.6e4 particles, half of
- * them wall ghosts), about 23 MB for the process without particles, and about 4 MB more per
- * process on several ranks (Open MPI's buffers, measured on 4 and 8 ranks); the constants keep a
- * small margin over these. doc/performance.md compares the estimates with measured peaks. The
- * cells: every rank holds an owner per top cell; rank 0 builds the METIS graph of the top cells; a
- * rank holds the cell index of its own region and its halo's reach only; at start-up every rank
- * holds the particle count and first id of every row of lattice nodes (engine/startup.c). */
+ * available on a node. The constants were fitted to the peak resident size that the end-of-run
+ * summary prints (timings.csv, with each rank's particles by kind and halo), 4 steps of runs:
+ * 1-rank runs of four 3D scenes (a full box and the bench's wall-heavy dam break, 1e5 to 2.5e5
+ * particles) and six 2D ones (the dam breaks with and without air, a small column in a large
+ * tank, 7e3 to 3.7e5 particles) give the process and the bytes per particle of each kind; runs on
+ * 2 to 16 ranks (the 3D dam break extruded, the 2D two-phase dam break) the bytes per halo
+ * particle and the re-partition's share; a tiny case on 1 to 64 ranks on one node the bytes per
+ * other rank on the node (Open MPI's shared-memory transport). They reproduce those 21 peaks
+ * within 15 %; doc/performance.md compares the estimates with the bench's runs. The cells: every
+ * rank holds an owner per top cell; rank 0 builds the METIS graph of the top cells; a rank holds
+ * the cell index of its own region and its halo's reach only; at start-up every rank holds the
+ * particle count and first id of every row of lattice nodes (engine/startup.c). */
 #include "app/mem_estimate.h"
 
 #include <math.h>
@@ -16,12 +18,19 @@
 #include <stdlib.h>
 #include <unistd.h>
 #include "case/init.h"
+#include "base/kinds.h"
 #include "engine/engine.h"
 
-#define BYTES_PER_PARTICLE_2D 440.0
-#define BYTES_PER_PARTICLE_3D 700.0
+/* Bytes of an owned particle of each kind, of a halo particle, and more per owned particle on
+ * several ranks (the packed copies of the particles a re-partition moves), in 2D and 3D. */
+static const double kind_bytes[2][KIND_COUNT] = {{[KIND_FLUID] = 340, [KIND_WALL] = 470},
+                                                 {[KIND_FLUID] = 820, [KIND_WALL] = 265}};
+_Static_assert(KIND_COUNT == 2, "measure the bytes of the new kind's particles for kind_bytes");
+static const double halo_particle_bytes[2] = {150, 600};
+static const double moving_bytes[2] = {100, 150};
 #define PROCESS_BYTES 24e6
-#define MPI_PROCESS_BYTES 4e6         /* more per process on several ranks */
+#define MPI_PROCESS_BYTES 2e6         /* more per process on several ranks */
+#define MPI_PEER_BYTES 0.4e6          /* and per other rank on the same node (shared-memory transport) */
 #define TOP_CELL_BYTES 8.0            /* owner and local slot of each top cell, every rank */
 #define METIS_BYTES_BASE 64.0         /* METIS graph of the top cells on rank 0: per vertex */
 #define METIS_BYTES_PER_LINK 16.0     /* and per neighbour link */
@@ -78,16 +87,67 @@ static double startup_bytes(const struct case_def *c, double support) {
   return bytes;
 }
 
-struct mem_estimate mem_estimate_rank(const struct case_def *c, double support, double n_particles,
-                                      int n_ranks) {
+/* The partition's tolerances (parallel/partition_metis.c): a rank holds at most this many times
+ * the mean work and the mean particles. */
+#define WORK_TOLERANCE 1.03
+#define PARTICLE_TOLERANCE 1.10
+
+/* A line a . n = b in the plane of the two kinds' counts n. */
+struct line {
+  double a[KIND_COUNT], b;
+};
+
+/* The owned particles of each kind of the rank that needs the most memory: the corner of
+ * {0 <= n_k <= n_kind[k], work <= tolerance x mean, particles <= tolerance x mean} with the most
+ * bytes (a linear programme in two unknowns: its optimum lies where two of the bounds meet). */
+static void largest_share(const double *n_kind, const double *bytes, int n_ranks, double *owned) {
+  double work = 0, particles = 0;
+  for (int k = 0; k < KIND_COUNT; k++) {
+    work += n_kind[k] * part_kinds[k].work;
+    particles += n_kind[k];
+  }
+  struct line bound[] = {{{1, 0}, 0}, {{0, 1}, 0}, {{1, 0}, n_kind[0]}, {{0, 1}, n_kind[1]},
+                         {{part_kinds[0].work, part_kinds[1].work}, WORK_TOLERANCE * work / n_ranks},
+                         {{1, 1}, PARTICLE_TOLERANCE * particles / n_ranks}};
+  int n_bounds = (int)(sizeof bound / sizeof bound[0]);
+  double best = -1;
+  for (int i = 0; i < n_bounds; i++)
+    for (int j = i + 1; j < n_bounds; j++) {
+      double det = bound[i].a[0] * bound[j].a[1] - bound[i].a[1] * bound[j].a[0];
+      if (det == 0) continue;
+      double n[2] = {(bound[i].b * bound[j].a[1] - bound[i].a[1] * bound[j].b) / det,
+                     (bound[i].a[0] * bound[j].b - bound[i].b * bound[j].a[0]) / det};
+      int inside = 1;
+      for (int k = 0; k < n_bounds && inside; k++)
+        inside = k < 2 ? n[k] >= -1e-9 * (1 + n_kind[k]) : bound[k].a[0] * n[0] + bound[k].a[1] * n[1] <= bound[k].b * (1 + 1e-12);
+      double b = n[0] * bytes[0] + n[1] * bytes[1];
+      if (inside && b > best) {
+        best = b;
+        owned[0] = fmax(n[0], 0);
+        owned[1] = fmax(n[1], 0);
+      }
+    }
+}
+
+struct mem_estimate mem_estimate_rank(const struct case_def *c, double support, const double *n_kind,
+                                      int n_ranks, int per_node) {
   struct mem_estimate m;
-  double share = n_particles / n_ranks;
-  m.particles = share + (n_ranks > 1 ? rank_halo(c, support, share, n_particles, n_ranks) : 0);
-  m.bytes_per_particle = c->dimension == 2 ? BYTES_PER_PARTICLE_2D : BYTES_PER_PARTICLE_3D;
-  m.process = PROCESS_BYTES + (n_ranks > 1 ? MPI_PROCESS_BYTES : 0);
+  const double *bytes = kind_bytes[c->dimension - 2];
+  double total = 0, share = 0;
+  largest_share(n_kind, bytes, n_ranks, m.owned);
+  m.particle_bytes = 0;
+  for (int k = 0; k < KIND_COUNT; k++) {
+    total += n_kind[k];
+    share += m.owned[k];
+    m.particle_bytes += m.owned[k] * bytes[k];
+  }
+  m.halo = n_ranks > 1 ? rank_halo(c, support, share, total, n_ranks) : 0;
+  m.particle_bytes += m.halo * halo_particle_bytes[c->dimension - 2];
+  if (n_ranks > 1) m.particle_bytes += share * moving_bytes[c->dimension - 2];
+  m.process = PROCESS_BYTES + (n_ranks > 1 ? MPI_PROCESS_BYTES + MPI_PEER_BYTES * (per_node - 1) : 0);
   m.cells = cell_bytes(c, support, n_ranks);
   m.startup = startup_bytes(c, support);
-  m.total = m.process + m.cells + m.startup + m.particles * m.bytes_per_particle;
+  m.total = m.process + m.cells + m.startup + m.particle_bytes;
   return m;
 }
 

@@ -8,6 +8,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 #include "case/case_load.h"
 #include "case/init.h"
 #include "physics/kernel.h"
@@ -30,25 +31,30 @@
 struct sizing {
   double support;            /* kernel support [m] */
   double n;                  /* particles (fluid + wall) */
-  int counted;               /* n and counts are exact; else n is the bound */
+  double n_kind[KIND_COUNT]; /* of each kind */
+  int counted;               /* n, n_kind and counts are exact; else bounds */
   struct init_counts counts;
 };
 
-/* Size case c for n_ranks ranks with `available` bytes each. The particles are counted when the
+/* Size case c for n_ranks ranks, per_node of them on each node, with `available` bytes each. The particles are counted when the
  * bound needs at most COUNT_GUARD times the memory available, and either always is set or the
  * bound does not fit. Returns 0, or 1 with particle generation's message. */
-static int size_case(const struct case_def *c, int n_ranks, double available, int always,
+static int size_case(const struct case_def *c, int n_ranks, int per_node, double available, int always,
                      struct sizing *s, char *err, size_t len) {
   struct kernel k;
   kernel_init(&k, c->kernel, c->dimension, c->h_over_dx * c->dx);
   s->support = k.support;
   s->n = init_visit_count(c, k.support);
+  s->n_kind[KIND_WALL] = init_wall_visit_count(c, k.support);
+  s->n_kind[KIND_FLUID] = s->n - s->n_kind[KIND_WALL];
   s->counted = 0;
-  double bound_bytes = mem_estimate_rank(c, k.support, s->n, n_ranks).total;
+  double bound_bytes = mem_estimate_rank(c, k.support, s->n_kind, n_ranks, per_node).total;
   if (bound_bytes > COUNT_GUARD * available || (bound_bytes <= available && !always)) return 0;
   if (always && s->n > COUNT_MAX_NODES) return 0;
   if (init_particles(c, k.support, NULL, &s->counts, err, len)) return 1;
-  s->n = (double)(s->counts.n_fluid + s->counts.n_wall);
+  s->n_kind[KIND_FLUID] = (double)s->counts.n_fluid;
+  s->n_kind[KIND_WALL] = (double)s->counts.n_wall;
+  s->n = s->n_kind[KIND_FLUID] + s->n_kind[KIND_WALL];
   s->counted = 1;
   return 0;
 }
@@ -87,15 +93,15 @@ static int memory_verdict(const struct case_def *c, int n_ranks, double availabl
   struct sizing s;
   char what[160];
   if (available < 0) return bad_memory_variable(err, len);
-  if (size_case(c, n_ranks, available, 0, &s, err, len)) return 1;
-  struct mem_estimate m = mem_estimate_rank(c, s.support, s.n, n_ranks);
+  if (size_case(c, n_ranks, per_node, available, 0, &s, err, len)) return 1;
+  struct mem_estimate m = mem_estimate_rank(c, s.support, s.n_kind, n_ranks, per_node);
   if (m.total <= available) return 0;
   describe_count(&s, what, sizeof what);
-  snprintf(err, len, "not enough memory: %s need about %.3g GB per rank on %d rank%s (%.0f bytes "
-           "per particle with the halo, %.0f MB per process, %.3g GB of cells), but %.3g GB are "
-           "available per rank (the node's available memory over its %d rank%s): use more nodes or "
-           "a coarser resolution.dx", what, m.total / 1e9, n_ranks, n_ranks == 1 ? "" : "s",
-           m.bytes_per_particle, m.process / 1e6, m.cells / 1e9, available / 1e9, per_node,
+  snprintf(err, len, "not enough memory: %s need about %.3g GB per rank on %d rank%s (%.3g GB of "
+           "particles, %.0f MB per process, %.3g GB of cells), but %.3g GB are available per rank "
+           "(the node's available memory over its %d rank%s): use more nodes or a coarser "
+           "resolution.dx", what, m.total / 1e9, n_ranks, n_ranks == 1 ? "" : "s",
+           m.particle_bytes / 1e9, m.process / 1e6, m.cells / 1e9, available / 1e9, per_node,
            per_node == 1 ? "" : "s");
   return 1;
 }
@@ -172,24 +178,27 @@ static void print_counts(const struct case_def *c, const struct sizing *s) {
   printf("; smoothing length %g m, kernel support %g m\n", c->h_over_dx * c->dx, s->support);
 }
 
-static void print_memory(const struct case_def *c, const struct sizing *s, int n_ranks,
+static void print_memory(const struct case_def *c, const struct sizing *s, int n_ranks, int per_node,
                          double available) {
-  struct mem_estimate m = mem_estimate_rank(c, s->support, s->n, n_ranks);
-  char need[32], cells[32], rows[32], have[32];
-  printf("# memory: about %s per rank on %d rank%s (%.0f particles with the halo at %.0f bytes "
-         "each, %.0f MB per process, %s of cells, %s of start-up rows); %s available on this "
-         "machine%s\n", bytes_text(m.total, need, sizeof need), n_ranks, n_ranks == 1 ? "" : "s",
-         m.particles, m.bytes_per_particle, m.process / 1e6, bytes_text(m.cells, cells, sizeof cells),
-         bytes_text(m.startup, rows, sizeof rows), bytes_text(available, have, sizeof have),
-         n_ranks == 1 && m.total > available ? ": more than it has" : "");
+  struct mem_estimate m = mem_estimate_rank(c, s->support, s->n_kind, n_ranks, per_node);
+  char need[32], parts[32], cells[32], rows[32], have[32];
+  printf("# memory: about %s per rank on %d rank%s, %d per node (the rank needing the most: %.0f fluid, %.0f "
+         "wall and %.0f halo particles, %s; %.0f MB per process, %s of cells, %s of start-up rows); "
+         "%s available on this machine%s\n", bytes_text(m.total, need, sizeof need), n_ranks,
+         n_ranks == 1 ? "" : "s", per_node, m.owned[KIND_FLUID], m.owned[KIND_WALL], m.halo,
+         bytes_text(m.particle_bytes, parts, sizeof parts), m.process / 1e6,
+         bytes_text(m.cells, cells, sizeof cells), bytes_text(m.startup, rows, sizeof rows),
+         bytes_text(available, have, sizeof have), n_ranks == 1 && m.total > available ? ": more than it has" : "");
 }
 
-int preflight_check(const struct case_def *c, int n_ranks) {
+int preflight_check(const struct case_def *c, int n_ranks, int per_node) {
   struct sizing s;
   char err[ERR_LEN];
   double available = mem_node_available();
+  long processors = sysconf(_SC_NPROCESSORS_ONLN);
+  if (!per_node) per_node = processors > 0 && processors < n_ranks ? (int)processors : n_ranks;
   int status = available < 0 ? bad_memory_variable(err, sizeof err) : 0;
-  if (!status) status = size_case(c, n_ranks, available, 1, &s, err, sizeof err);
+  if (!status) status = size_case(c, n_ranks, per_node, available, 1, &s, err, sizeof err);
   if (status) {
     fprintf(stderr, "mpsph: %s\n", err);
     return 1;
@@ -198,6 +207,6 @@ int preflight_check(const struct case_def *c, int n_ranks) {
   printf("%s", yaml);
   free(yaml);
   print_counts(c, &s);
-  print_memory(c, &s, n_ranks, available);
+  print_memory(c, &s, n_ranks, per_node, available);
   return 0;
 }

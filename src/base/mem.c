@@ -7,6 +7,17 @@
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
+
+#define MMAP_THRESHOLD_BYTES (128 * 1024)   /* glibc's initial threshold, kept fixed */
+
+void mem_setup(void) {
+#if defined(__GLIBC__)
+  mallopt(M_MMAP_THRESHOLD, MMAP_THRESHOLD_BYTES);
+#endif
+}
 
 _Noreturn void mem_fail(size_t bytes, const char *what) {
   if (bytes) fprintf(stderr, "mpsph: out of memory: %s (%zu bytes)\n", what, bytes);

@@ -420,9 +420,14 @@ static double tank_bound(const struct shape *s, int dim, int layers, double dx) 
 }
 
 double init_visit_count(const struct case_def *c, double support) {
+  double total = init_wall_visit_count(c, support);
+  for (int k = 0; k < c->n_fluids; k++) total += lattice_bound(&c->fluids[k].shape, c->dimension, 0, c->dx);
+  return isnan(total) ? INFINITY : total;
+}
+
+double init_wall_visit_count(const struct case_def *c, double support) {
   int dim = c->dimension, layers = init_wall_layers(c, support);
   double total = 0;
-  for (int k = 0; k < c->n_fluids; k++) total += lattice_bound(&c->fluids[k].shape, dim, 0, c->dx);
   for (int w = 0; w < c->n_walls; w++) {
     const struct shape *s = &c->walls[w].shape;
     if (s->kind == SHAPE_BOX && c->walls[w].fluid_side == FLUID_INSIDE)

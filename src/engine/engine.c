@@ -13,9 +13,6 @@
 #include "parallel/partition.h"
 #include "parallel/redistribute.h"
 #include "physics/passes.h"
-#ifdef __GLIBC__
-#include <malloc.h>
-#endif
 #include "engine/signal_stop.h"
 #include "base/mem.h"
 
@@ -27,7 +24,7 @@ static void report(const struct engine *e, const char *msg) {
   if (e->rank == 0) fprintf(stderr, "mpsph: %s\n", msg);
 }
 
-/* Work units of owned particle i for the partition's weights: its kind's (base/kinds.h). */
+/* Work units of owned particle i: its kind's (base/kinds.h). */
 static int particle_work(const struct engine *e, long i) { return part_kinds[kind_of(e->p.phase[i])].work; }
 
 /* Work units of this rank's owned particles. */
@@ -46,20 +43,29 @@ static double cost_factor(const struct engine *e) {
   return sum > 0 && rate > 0 ? rate / (sum / e->n_ranks) : 1.0;
 }
 
-/* Vertex weight of each top cell from this rank's owned particles scaled by the rank's cost
- * factor, summed onto rank 0 (plus 1 so that empty cells still count). */
+void engine_weight_add(const struct engine *e, int64_t *weight, long cell, enum part_kind kind) {
+  int64_t *w = weight + space_top_of(&e->space, cell) * PARTITION_CONSTRAINTS;
+  w[WEIGHT_WORK] += part_kinds[kind].work;
+  w[WEIGHT_PARTICLES] += 1;
+}
+
+void engine_weights_reduce(const struct engine *e, int64_t *weight) {
+  int n = (int)(e->space.top.n_cells * PARTITION_CONSTRAINTS);
+  MPI_Reduce(e->rank ? weight : MPI_IN_PLACE, weight, n, MPI_INT64_T, MPI_SUM, 0, e->comm);
+  if (e->rank == 0)
+    for (int k = 0; k < n; k++) weight[k] += 1;
+}
+
+/* The partition weights of the top cells from this rank's owned particles, their work scaled by
+ * the rank's cost factor, summed onto rank 0. */
 static int64_t *top_cell_weights(const struct engine *e) {
   long n = e->space.top.n_cells;
-  int64_t *w = mem_calloc(n, sizeof(int64_t), "top cell weights");
+  int64_t *w = mem_calloc((size_t)n * PARTITION_CONSTRAINTS, sizeof(int64_t), "top cell weights");
   double factor = cost_factor(e);
-  for (long i = 0; i < e->p.n_owned; i++) w[space_top_of(&e->space, e->p.cell[i])] += particle_work(e, i);
-  for (long c = 0; c < n; c++) w[c] = (int64_t)llround((double)w[c] * factor);
-  if (e->rank == 0) {
-    MPI_Reduce(MPI_IN_PLACE, w, (int)n, MPI_INT64_T, MPI_SUM, 0, e->comm);
-    for (long c = 0; c < n; c++) w[c] += 1;
-  } else {
-    MPI_Reduce(w, NULL, (int)n, MPI_INT64_T, MPI_SUM, 0, e->comm);
-  }
+  for (long i = 0; i < e->p.n_owned; i++) engine_weight_add(e, w, e->p.cell[i], kind_of(e->p.phase[i]));
+  for (long c = 0; c < n; c++)
+    w[c * PARTITION_CONSTRAINTS + WEIGHT_WORK] = (int64_t)llround((double)w[c * PARTITION_CONSTRAINTS + WEIGHT_WORK] * factor);
+  engine_weights_reduce(e, w);
   return w;
 }
 
@@ -122,9 +128,6 @@ int engine_repartition(struct engine *e) {
   e->n_repartitions++;
   e->last_repartition_step = e->step;
   e->t_repartition += MPI_Wtime() - t0;
-#ifdef __GLIBC__
-  malloc_trim(0);   /* hand the redistribution's freed message buffers back to the system */
-#endif
   return 0;
 }
 

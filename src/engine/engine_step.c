@@ -298,7 +298,7 @@ static void run_overlapped(struct engine *e, int k) {
   ctx.progress_arg = &e->halo;
   op->pass(&ctx);
   double t2 = MPI_Wtime();
-  halo_update_end(&e->halo, fields, n);
+  halo_update_end(&e->halo);
   double t3 = MPI_Wtime();
   ctx.cells = s->by_reach + s->n_interior;
   ctx.n_cells = s->n_owned_cells - s->n_interior;

@@ -28,7 +28,7 @@ static long block_start(const struct init_rows *rows, int r, int n_ranks) {
   return rows->n_rows;
 }
 
-/* What the counting pass gathers: the work per top cell, whether a particle lies outside the
+/* What the counting pass gathers: the partition weights per top cell, whether a particle lies outside the
  * domain. */
 struct count_ctx {
   const struct engine *e;
@@ -45,8 +45,7 @@ static void count_node(void *ctx, const double *x, int source, long ordinal) {
     q->outside = 1;
     return;
   }
-  enum part_kind kind = source < q->e->c->n_fluids ? KIND_FLUID : KIND_WALL;
-  q->weight[space_top_of(s, cell)] += part_kinds[kind].work;
+  engine_weight_add(q->e, q->weight, cell, source < q->e->c->n_fluids ? KIND_FLUID : KIND_WALL);
 }
 
 /* Agree on the first row where bad input was found (bad_row: this rank's, or -1); rank 0 prints
@@ -191,7 +190,7 @@ static int generate_own(struct engine *e, const struct init_rows *rows, const in
   return 1;
 }
 
-/* Count the rows of this rank's block, with the work per top cell summed onto rank 0. Returns
+/* Count the rows of this rank's block, with the partition weights per top cell summed onto rank 0. Returns
  * 0, or 1 with the message printed (bad input, a particle outside the domain). */
 static int count_block(struct engine *e, const struct init_rows *rows, const long *starts,
                        int *mine, int64_t *weight) {
@@ -205,10 +204,7 @@ static int count_block(struct engine *e, const struct init_rows *rows, const lon
     if (e->rank == 0) fprintf(stderr, "mpsph: a particle lies outside the domain at start-up\n");
     return 1;
   }
-  long n_top = e->space.top.n_cells;
-  MPI_Reduce(e->rank ? weight : MPI_IN_PLACE, weight, (int)n_top, MPI_INT64_T, MPI_SUM, 0, e->comm);
-  if (e->rank == 0)
-    for (long t = 0; t < n_top; t++) weight[t] += 1;
+  engine_weights_reduce(e, weight);
   return 0;
 }
 
@@ -236,7 +232,8 @@ int engine_generate(struct engine *e) {
   for (int r = 0; r < e->n_ranks; r++) starts[r] = block_start(&rows, r, e->n_ranks);
   starts[e->n_ranks] = rows.n_rows;
   int *mine = mem_calloc(starts[e->rank + 1] - starts[e->rank] + 1, sizeof(int), "particles per row");
-  int64_t *weight = mem_calloc(e->space.top.n_cells, sizeof(int64_t), "top cell weights");
+  int64_t *weight = mem_calloc((size_t)e->space.top.n_cells * PARTITION_CONSTRAINTS, sizeof(int64_t),
+                               "top cell weights");
   parts_init(&e->p, e->c->dimension, 1024, e->c->n_walls > 0);
   int status = count_block(e, &rows, starts, mine, weight);
   int *all = status ? NULL : gather_counts(e, &rows, starts, mine);

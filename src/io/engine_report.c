@@ -47,9 +47,15 @@ static double current_file_rss_bytes(void) { return proc_kb_line("/proc/self/sta
  * library pages counted once. */
 static double current_pss_bytes(void) { return proc_kb_line("/proc/self/smaps_rollup", "Pss:"); }
 
+/* The owned particles of this rank by kind. */
+static void local_counts(const struct engine *e, double *count) {
+  for (int k = 0; k < KIND_COUNT; k++) count[k] = 0;
+  for (long i = 0; i < e->p.n_owned; i++) count[kind_of(e->p.phase[i])]++;
+}
+
 void engine_global_counts(const struct engine *e, double *n_fluid, double *n_wall) {
-  double local[KIND_COUNT] = {0}, total[KIND_COUNT];
-  for (long i = 0; i < e->p.n_owned; i++) local[kind_of(e->p.phase[i])]++;
+  double local[KIND_COUNT], total[KIND_COUNT];
+  local_counts(e, local);
   MPI_Allreduce(local, total, KIND_COUNT, MPI_DOUBLE, MPI_SUM, e->comm);
   *n_fluid = total[KIND_FLUID];
   *n_wall = total[KIND_WALL];
@@ -72,7 +78,10 @@ static void project_bytes(struct engine *e, double *bytes) {
   bytes[MEM_HALO] = (double)halo_bytes(&e->halo);
 }
 
-#define PER_RANK 5   /* memory figures gathered from each rank: peak, end, file-backed, project, PSS */
+/* Figures gathered from each rank: memory (peak, end, file-backed, project, PSS [bytes]), then
+ * its particles at the end (owned of each kind, halo). */
+enum { RANK_PEAK, RANK_END, RANK_FILE, RANK_PROJECT, RANK_PSS, RANK_OWNED, RANK_HALO = RANK_OWNED + KIND_COUNT,
+       PER_RANK };
 
 /* Everything the summary reports, reduced over the ranks (memory gathered to rank 0). */
 struct run_summary {
@@ -81,7 +90,7 @@ struct run_summary {
   double loop_seconds, n_fluid, n_wall;
   double op_max[ENGINE_MAX_OPS], op_mean[ENGINE_MAX_OPS], op_pairs[ENGINE_MAX_OPS];
   double migrate_max, migrate_mean, output_max, steps_max, dropped_max, dropped_mean, cpu_max, cpu_mean;
-  double *per_rank;                /* per rank: peak RSS, current RSS, its file-backed part, project bytes; rank 0 only [bytes] */
+  double *per_rank;                /* PER_RANK figures of each rank; rank 0 only */
   double mem_sum[N_MEM];           /* the project's arrays by owner, summed over the ranks [bytes] */
   double halo_particles;           /* halo copies summed over the ranks */
   double halo_particles_max;       /* on the rank with the most */
@@ -98,9 +107,12 @@ static void max_mean(const struct engine *e, double x, double *max, double *mean
 }
 
 static void summarise(struct engine *e, long steps, double loop_seconds, struct run_summary *s) {
-  double rss[PER_RANK] = {peak_rss_bytes(), current_rss_bytes(), current_file_rss_bytes(), 0, current_pss_bytes()}, *all = NULL, mem[N_MEM];
+  double rss[PER_RANK] = {[RANK_PEAK] = peak_rss_bytes(), [RANK_END] = current_rss_bytes(),
+                          [RANK_FILE] = current_file_rss_bytes(), [RANK_PSS] = current_pss_bytes(),
+                          [RANK_HALO] = (double)e->p.n_halo}, *all = NULL, mem[N_MEM];
   project_bytes(e, mem);
-  for (int k = 0; k < N_MEM; k++) rss[3] += mem[k];
+  for (int k = 0; k < N_MEM; k++) rss[RANK_PROJECT] += mem[k];
+  local_counts(e, rss + RANK_OWNED);
   MPI_Reduce(mem, s->mem_sum, N_MEM, MPI_DOUBLE, MPI_SUM, 0, e->comm);
   double halo = (double)e->p.n_halo;
   MPI_Reduce(&halo, &s->halo_particles, 1, MPI_DOUBLE, MPI_SUM, 0, e->comm);
@@ -154,9 +166,17 @@ static void write_rows(FILE *f, const void *ctx) {
   fprintf(f, "repartition,time,%ld,%.6f,%.6f,\n", e->n_repartitions, s->repartition_max, s->repartition_mean);
   for (int r = 0; r < e->n_ranks; r++) {
     const double *m = s->per_rank + PER_RANK * r;
-    fprintf(f, "rss_peak_rank%d,memory,%.0f,,,\nrss_end_rank%d,memory,%.0f,,,\n", r, m[0], r, m[1]);
-    fprintf(f, "rss_file_end_rank%d,memory,%.0f,,,\nproject_bytes_rank%d,memory,%.0f,,,\n", r, m[2], r, m[3]);
-    fprintf(f, "pss_end_rank%d,memory,%.0f,,,\n", r, m[4]);
+    fprintf(f, "rss_peak_rank%d,memory,%.0f,,,\nrss_end_rank%d,memory,%.0f,,,\n", r, m[RANK_PEAK], r, m[RANK_END]);
+    fprintf(f, "rss_file_end_rank%d,memory,%.0f,,,\nproject_bytes_rank%d,memory,%.0f,,,\n", r, m[RANK_FILE], r,
+            m[RANK_PROJECT]);
+    fprintf(f, "pss_end_rank%d,memory,%.0f,,,\n", r, m[RANK_PSS]);
+    for (int k = 0; k < KIND_COUNT; k++) {
+      char key[32];
+      snprintf(key, sizeof key, "%s", part_kinds[k].name);
+      for (char *c = key; *c; c++) *c = *c == ' ' ? '_' : *c;
+      fprintf(f, "owned_%s_rank%d,run,%.0f,,,\n", key, r, m[RANK_OWNED + k]);
+    }
+    fprintf(f, "halo_rank%d,run,%.0f,,,\n", r, m[RANK_HALO]);
   }
   for (int k = 0; k < N_MEM; k++) fprintf(f, "bytes_%s,memory,%.0f,,,\n", mem_names[k], s->mem_sum[k]);
 }
@@ -172,10 +192,10 @@ static void print_summary(const struct engine *e, const struct run_summary *s) {
   double rss_max = 0, rss_sum = 0, pss_sum = 0, own = 0, n = s->n_fluid + s->n_wall;
   for (int r = 0; r < e->n_ranks; r++) {
     const double *m = s->per_rank + PER_RANK * r;
-    rss_max = rss_max > m[0] ? rss_max : m[0];
-    rss_sum += m[0];
-    pss_sum += m[4];
-    own += m[3];
+    rss_max = rss_max > m[RANK_PEAK] ? rss_max : m[RANK_PEAK];
+    rss_sum += m[RANK_PEAK];
+    pss_sum += m[RANK_PSS];
+    own += m[RANK_PROJECT];
   }
   printf("summary: %ld steps in %.2f s on %d ranks; %.0f fluid + %.0f wall particles\n", s->steps,
          s->loop_seconds, e->n_ranks, s->n_fluid, s->n_wall);

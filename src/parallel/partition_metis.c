@@ -6,7 +6,7 @@
 #include "base/mem.h"
 
 #define METIS_SEED 42
-#define METIS_UBVEC 1.03f   /* allowed load imbalance of a part */
+static const real_t imbalance_allowed[PARTITION_CONSTRAINTS] = {[WEIGHT_WORK] = 1.03f, [WEIGHT_PARTICLES] = 1.10f};
 
 /* CSR adjacency of the cells: each cell linked to its 3^dim - 1 neighbours. */
 static void cell_graph(const struct grid *g, idx_t **xadj_out, idx_t **adjncy_out) {
@@ -30,18 +30,19 @@ static void cell_graph(const struct grid *g, idx_t **xadj_out, idx_t **adjncy_ou
 static int metis_partition(const struct grid *g, const int64_t *weight, int n_parts, int *owner) {
   idx_t *xadj, *adjncy;
   cell_graph(g, &xadj, &adjncy);
-  idx_t nvtxs = (idx_t)g->n_cells, ncon = 1, nparts = n_parts, objval;
-  idx_t *vwgt = mem_calloc(g->n_cells, sizeof(idx_t), "METIS cell weights");
+  idx_t nvtxs = (idx_t)g->n_cells, ncon = PARTITION_CONSTRAINTS, nparts = n_parts, objval;
+  idx_t *vwgt = mem_calloc((size_t)g->n_cells * ncon, sizeof(idx_t), "METIS cell weights");
   idx_t *part = mem_calloc(g->n_cells, sizeof(idx_t), "METIS partition");
-  for (long c = 0; c < g->n_cells; c++) vwgt[c] = (idx_t)weight[c];
+  for (long k = 0; k < g->n_cells * ncon; k++) vwgt[k] = (idx_t)weight[k];
   idx_t options[METIS_NOPTIONS];
   METIS_SetDefaultOptions(options);
   options[METIS_OPTION_OBJTYPE] = METIS_OBJTYPE_CUT;
   options[METIS_OPTION_SEED] = METIS_SEED;
   options[METIS_OPTION_NUMBERING] = 0;
-  real_t ubvec = METIS_UBVEC;
+  real_t ubvec[PARTITION_CONSTRAINTS];
+  for (int k = 0; k < PARTITION_CONSTRAINTS; k++) ubvec[k] = imbalance_allowed[k];
   int status = METIS_PartGraphKway(&nvtxs, &ncon, xadj, adjncy, vwgt, NULL, NULL, &nparts, NULL,
-                                   &ubvec, options, &objval, part);
+                                   ubvec, options, &objval, part);
   for (long c = 0; c < g->n_cells; c++) owner[c] = (int)part[c];
   free(xadj);
   free(adjncy);
@@ -95,10 +96,10 @@ int partition_cells(const struct grid *g, const int64_t *weight, int n_parts, MP
   return 0;
 }
 
-double partition_imbalance(const struct grid *g, const int64_t *weight, const int *owner,
+double partition_imbalance(const struct grid *g, const int64_t *weight, int k, const int *owner,
                            int n_parts) {
   double *load = mem_calloc(n_parts, sizeof(double), "load per rank"), total = 0, max = 0;
-  for (long c = 0; c < g->n_cells; c++) load[owner[c]] += (double)weight[c];
+  for (long c = 0; c < g->n_cells; c++) load[owner[c]] += (double)weight[c * PARTITION_CONSTRAINTS + k];
   for (int r = 0; r < n_parts; r++) {
     total += load[r];
     if (load[r] > max) max = load[r];

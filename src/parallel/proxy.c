@@ -62,6 +62,98 @@ static void reserve_buf(double **buf, long *cap, long n) {
   *buf = mem_realloc(*buf, mem_bytes(*cap, sizeof(double), "halo buffer"), "halo buffer");
 }
 
+/* The columns of a halo message: per-particle arrays indexed by slot, each of one element type.
+ * A message to a proxy carries, column after column, the values of the particles it is sent
+ * (send_index); a message from it fills the slots recv_first.. of each column. The messages are
+ * described by MPI datatypes over the arrays themselves, so no buffer holds a copy. */
+#define MAX_COLUMNS 64
+struct columns {
+  int n;
+  void *base[MAX_COLUMNS];
+  enum part_type type[MAX_COLUMNS];
+};
+
+static void add_column(struct columns *c, void *base, enum part_type type) {
+  if (c->n == MAX_COLUMNS) {
+    fprintf(stderr, "mpsph: internal error: a halo message of more than %d columns\n", MAX_COLUMNS);
+    MPI_Abort(MPI_COMM_WORLD, 3);
+  }
+  c->base[c->n] = base;
+  c->type[c->n++] = type;
+}
+
+static MPI_Datatype mpi_type(enum part_type type) {
+  return type == PART_DOUBLE ? MPI_DOUBLE : type == PART_INT ? MPI_INT : MPI_INT64_T;
+}
+
+static size_t type_bytes(enum part_type type) {
+  return type == PART_DOUBLE ? sizeof(double) : type == PART_INT ? sizeof(int) : sizeof(int64_t);
+}
+
+/* Build px->pick[t]: the elements send_index[0..n_send) of an array of element type t. */
+static void build_picks(struct proxy *px) {
+  int *disp = mem_calloc(px->n_send + 1, sizeof(int), "halo send displacements");
+  for (long i = 0; i < px->n_send; i++) disp[i] = (int)px->send_index[i];
+  for (int t = 0; t < N_PART_TYPES; t++) {
+    MPI_Type_create_indexed_block((int)px->n_send, 1, disp, mpi_type((enum part_type)t), &px->pick[t]);
+    MPI_Type_commit(&px->pick[t]);
+  }
+  px->has_picks = 1;
+  free(disp);
+}
+
+static void free_picks(struct proxy *px) {
+  for (int t = 0; px->has_picks && t < N_PART_TYPES; t++) MPI_Type_free(&px->pick[t]);
+  px->has_picks = 0;
+}
+
+/* The committed datatype, relative to MPI_BOTTOM, of px's message of the columns c: what it is
+ * sent (send) or what it sends here. */
+static MPI_Datatype message_type(const struct proxy *px, const struct columns *c, int send) {
+  int len[MAX_COLUMNS];
+  MPI_Aint disp[MAX_COLUMNS];
+  MPI_Datatype types[MAX_COLUMNS], message;
+  for (int k = 0; k < c->n; k++) {
+    char *first = (char *)c->base[k] + (send ? 0 : (size_t)px->recv_first * type_bytes(c->type[k]));
+    MPI_Get_address(first, &disp[k]);
+    len[k] = send ? 1 : (int)px->n_recv;
+    types[k] = send ? px->pick[c->type[k]] : mpi_type(c->type[k]);
+  }
+  MPI_Type_create_struct(c->n, len, disp, types, &message);
+  MPI_Type_commit(&message);
+  return message;
+}
+
+/* Post the messages of the columns c with every proxy (requests h->requests[0..h->n_pending)):
+ * received in place; sent from the arrays, or (packed) from the proxies' send buffers, holding
+ * the columns one after the other (double columns only). */
+static void post_columns(struct halo *h, const struct columns *c, int packed, int tag) {
+  MPI_Request *req = h->requests;
+  int nreq = 0;
+  for (int k = 0; k < h->n_proxies; k++) {
+    struct proxy *px = &h->proxies[k];
+    MPI_Datatype t;
+    if (px->n_recv) {
+      t = message_type(px, c, 0);
+      MPI_Irecv(MPI_BOTTOM, 1, t, px->rank, tag, h->comm, &req[nreq++]);
+      MPI_Type_free(&t);
+    }
+    if (px->n_send && packed) {
+      MPI_Isend(px->send_buf, (int)(px->n_send * c->n), MPI_DOUBLE, px->rank, tag, h->comm, &req[nreq++]);
+      h->n_bytes += px->n_send * c->n * (long)sizeof(double);
+    } else if (px->n_send) {
+      int bytes;
+      t = message_type(px, c, 1);
+      MPI_Type_size(t, &bytes);
+      MPI_Isend(MPI_BOTTOM, 1, t, px->rank, tag, h->comm, &req[nreq++]);
+      MPI_Type_free(&t);
+      h->n_bytes += bytes;
+    }
+    h->n_messages += px->n_send > 0;
+  }
+  h->n_pending = nreq;
+}
+
 /* Set cand[r] for every other rank owning a fine cell within the space's halo reach (halo_layers)
  * of a cell of this rank: a symmetric relation, the ranks that may exchange halo cells with it. */
 static void mark_candidates(const struct space *s, char *cand) {
@@ -243,6 +335,7 @@ void halo_free(struct halo *h) {
     struct proxy *px = &h->proxies[k];
     free(px->cells_out);
     free(px->send_index);
+    free_picks(px);
     free(px->send_buf);
     free(px->recv_buf);
   }
@@ -270,6 +363,8 @@ static void collect_send(struct proxy *px, const struct space *s) {
     long c = px->cells_out[k], start = space_cell_first(s, c), count = space_cell_size(s, c);
     for (long j = 0; j < count; j++) px->send_index[px->n_send++] = start + j;
   }
+  free_picks(px);
+  build_picks(px);
 }
 
 /* Exchange one count per proxy: send[k] goes to proxy k, recv[k] comes from it. */
@@ -312,11 +407,18 @@ static void exchange_buffers(struct halo *h, const long *n_send_vals, const long
   wait_buffers(h);
 }
 
+/* The columns of the fields of parts_fields that op carries. */
+static void part_columns(struct parts *p, unsigned op, struct columns *c) {
+  c->n = 0;
+  for (const struct part_field *f = parts_fields; f < parts_fields + parts_n_fields; f++)
+    if ((f->ops & op) && parts_has_field(p, f))
+      for (int k = 0; k < parts_field_ncomp(p, f); k++) add_column(c, parts_field_array(p, f, k), f->type);
+}
+
 void halo_rebuild(struct halo *h, const struct space *s, struct parts *p) {
-  int np = h->n_proxies, w = parts_packed_size(p, PART_HALO);
+  int np = h->n_proxies;
   long *counts = zeroed_counts(h);
-  long *n_send = counts, *n_recv = counts + np + 1, *vals_send = counts + 2 * (np + 1),
-       *vals_recv = counts + 3 * (np + 1);
+  long *n_send = counts, *n_recv = counts + np + 1;
   for (int k = 0; k < np; k++) {
     collect_send(&h->proxies[k], s);
     n_send[k] = h->proxies[k].n_send;
@@ -328,36 +430,34 @@ void halo_rebuild(struct halo *h, const struct space *s, struct parts *p) {
     px->n_recv = n_recv[k];
     px->recv_first = p->n_owned + total;
     total += n_recv[k];
-    vals_send[k] = n_send[k] * w;
-    vals_recv[k] = n_recv[k] * w;
-    reserve_buf(&px->send_buf, &px->send_cap, vals_send[k]);
-    reserve_buf(&px->recv_buf, &px->recv_cap, vals_recv[k]);
-    parts_pack(p, PART_HALO, px->send_index, px->n_send, px->send_buf);
   }
   parts_reserve(p, p->n_owned + total);
-  exchange_buffers(h, vals_send, vals_recv, TAG_PARTS);
-  for (int k = 0; k < np; k++) {
-    struct proxy *px = &h->proxies[k];
-    parts_unpack(p, PART_HALO, px->recv_first, px->n_recv, px->recv_buf);
-  }
+  struct columns c;
+  part_columns(p, PART_HALO, &c);
+  post_columns(h, &c, 0, TAG_PARTS);
+  wait_buffers(h);
   p->n_halo = total;
 }
 
-void halo_update_begin(struct halo *h, double *const *fields, int n_fields) {
-  int np = h->n_proxies;
-  long *vals = zeroed_counts(h);
-  for (int k = 0; k < np; k++) {
+/* The columns of a halo update's fields, received in place; sent from the proxies' send buffers
+ * (the owned slots may change while the update is under way), packed here field by field. */
+static void update_columns(struct halo *h, double *const *fields, int n_fields, struct columns *c) {
+  c->n = 0;
+  for (int f = 0; f < n_fields; f++) add_column(c, fields[f], PART_DOUBLE);
+  for (int k = 0; k < h->n_proxies; k++) {
     struct proxy *px = &h->proxies[k];
-    vals[k] = px->n_send * n_fields;
-    vals[np + 1 + k] = px->n_recv * n_fields;
-    reserve_buf(&px->send_buf, &px->send_cap, vals[k]);
-    reserve_buf(&px->recv_buf, &px->recv_cap, vals[np + 1 + k]);
+    reserve_buf(&px->send_buf, &px->send_cap, px->n_send * n_fields);
     for (int f = 0; f < n_fields; f++) {
       double *dst = px->send_buf + f * px->n_send;
       for (long i = 0; i < px->n_send; i++) dst[i] = fields[f][px->send_index[i]];
     }
   }
-  post_buffers(h, vals, vals + np + 1, TAG_FIELDS);
+}
+
+void halo_update_begin(struct halo *h, double *const *fields, int n_fields) {
+  struct columns c;
+  update_columns(h, fields, n_fields, &c);
+  post_columns(h, &c, 1, TAG_FIELDS);
 }
 
 void halo_update_progress(struct halo *h) {
@@ -365,21 +465,11 @@ void halo_update_progress(struct halo *h) {
   if (h->n_pending) MPI_Testall(h->n_pending, h->requests, &done, MPI_STATUSES_IGNORE);
 }
 
-void halo_update_end(struct halo *h, double *const *fields, int n_fields) {
-  wait_buffers(h);
-  for (int k = 0; k < h->n_proxies; k++) {
-    struct proxy *px = &h->proxies[k];
-    for (int f = 0; f < n_fields; f++) {
-      const double *src = px->recv_buf + f * px->n_recv;
-      double *dst = fields[f] + px->recv_first;
-      memcpy(dst, src, px->n_recv * sizeof(double));
-    }
-  }
-}
+void halo_update_end(struct halo *h) { wait_buffers(h); }
 
 void halo_update(struct halo *h, double *const *fields, int n_fields) {
   halo_update_begin(h, fields, n_fields);
-  halo_update_end(h, fields, n_fields);
+  halo_update_end(h);
 }
 
 /* The id of an owned particle whose new owner is neither this rank nor a neighbour, or -1. */
