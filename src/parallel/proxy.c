@@ -92,14 +92,11 @@ static size_t type_bytes(enum part_type type) {
 
 /* Build px->pick[t]: the elements send_index[0..n_send) of an array of element type t. */
 static void build_picks(struct proxy *px) {
-  int *disp = mem_calloc(px->n_send + 1, sizeof(int), "halo send displacements");
-  for (long i = 0; i < px->n_send; i++) disp[i] = (int)px->send_index[i];
   for (int t = 0; t < N_PART_TYPES; t++) {
-    MPI_Type_create_indexed_block((int)px->n_send, 1, disp, mpi_type((enum part_type)t), &px->pick[t]);
+    MPI_Type_create_indexed_block((int)px->n_send, 1, px->send_index, mpi_type((enum part_type)t), &px->pick[t]);
     MPI_Type_commit(&px->pick[t]);
   }
   px->has_picks = 1;
-  free(disp);
 }
 
 static void free_picks(struct proxy *px) {
@@ -318,7 +315,7 @@ long halo_bytes(const struct halo *h) {
   long bytes = 0;
   for (int k = 0; k < h->n_proxies; k++) {
     const struct proxy *px = &h->proxies[k];
-    bytes += (px->n_cells_out + px->send_index_cap) * (long)sizeof(long) +
+    bytes += px->n_cells_out * (long)sizeof(long) + px->send_index_cap * (long)sizeof(int) +
              (px->send_cap + px->recv_cap) * (long)sizeof(double);
   }
   return bytes;
@@ -355,13 +352,13 @@ static void collect_send(struct proxy *px, const struct space *s) {
   for (long k = 0; k < px->n_cells_out; k++) n += space_cell_size(s, px->cells_out[k]);
   if (n > px->send_index_cap) {
     px->send_index_cap = n + n / 4 + 64;
-    px->send_index = mem_realloc(px->send_index, mem_bytes(px->send_index_cap, sizeof(long), "halo send index"),
+    px->send_index = mem_realloc(px->send_index, mem_bytes(px->send_index_cap, sizeof(int), "halo send index"),
                                   "halo send index");
   }
   px->n_send = 0;
   for (long k = 0; k < px->n_cells_out; k++) {
     long c = px->cells_out[k], start = space_cell_first(s, c), count = space_cell_size(s, c);
-    for (long j = 0; j < count; j++) px->send_index[px->n_send++] = start + j;
+    for (long j = 0; j < count; j++) px->send_index[px->n_send++] = (int)(start + j);
   }
   free_picks(px);
   build_picks(px);
