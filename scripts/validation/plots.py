@@ -185,9 +185,10 @@ def air_pocket(ax, items):
     ax.set_ylabel("p [Pa] (dots: adiabatic from volume)")
 
 
-def kleefsman(ax, items):
+def _gauge_heights(ax, items, ref_label, axes, t_default):
     """Water heights at the gauges H1-H4 against time, each rung in its colour (H1 solid, H2
-    dashed, H3 dash-dotted, H4 dotted), with the experiment in the same styles in black."""
+    dashed, H3 dash-dotted, H4 dotted), with the reference in the same styles in black; axes the
+    (x, y) axis labels, t_default the x range without runs."""
     styles = dict(zip(metrics.KLEEFSMAN_GAUGES, ("-", "--", "-.", ":")))
     for r, c in items:
         color = None
@@ -196,7 +197,17 @@ def kleefsman(ax, items):
     if items:
         c = items[-1][1]
         for g, ls in styles.items():
-            ax.plot(c["t_ref"], c[g + "_ref"], ls, lw=0.5, color="k", label="Kleefsman et al. 2005 (H1-H4)" if g == "H1" else None)
-    ax.set_xlim(0, max(c["t"][-1] for _, c in items) if items else 6.0)
-    ax.set_xlabel("t [s]")
-    ax.set_ylabel("water height [m] (H1 -, H2 --, H3 -., H4 :)")
+            ax.plot(c["t_ref"], c[g + "_ref"], ls, lw=0.5, color="k", label=ref_label if g == "H1" else None)
+    ax.set_xlim(0, max(c["t"][-1] for _, c in items) if items else t_default)
+    ax.set_xlabel(axes[0])
+    ax.set_ylabel(axes[1] + " (H1 -, H2 --, H3 -., H4 :)")
+
+
+def kleefsman(ax, items):
+    """The water heights of the 3D dam break against a box (Kleefsman et al. 2005)."""
+    _gauge_heights(ax, items, "Kleefsman et al. 2005 (H1-H4)", ("t [s]", "water height [m]"), 6.0)
+
+
+def lobovsky(ax, items):
+    """The water levels of the 3D two-phase dam break (Lobovsky et al. 2014), h/H against t sqrt(g/H)."""
+    _gauge_heights(ax, items, "Lobovsky et al. 2014 (H1-H4)", ("t sqrt(g/H)", "h / H"), 7.15)

@@ -440,3 +440,35 @@ STUDIES.append({
               rung(0.05, 2), rung(0.025, 8), rung(0.0125, 32)],
     "plot": "kleefsman",
 })
+
+LOBOVSKY_DATA = ("dambreak_water_level_lobovsky2014_H300.csv", "dambreak_pressure_lobovsky2014_H300_event5.csv")
+LOBOVSKY_SPAN = {"time.end": 1.25}   # t sqrt(g/H) = 7.15: past every gauge's second jump and sensor #4's peak
+# the case without its air and without the acoustic damper (its water column and water phase as in the
+# case file): paper 003's single-phase comparison, and cheap (the air's stability sound speed, about
+# 14 c0 of the water, sets the two-phase step)
+WATER_ONLY = {"fluids": "[{phase: water, box: {min: [0, 0, 0], max: [0.6, 0.15, 0.3]}}]",
+              "phases": "[{name: water, rho0: 1000, c0: 34.3, gamma: 7, incompressible: true}]",
+              "physics.acoustic_damper": 0}
+WATER_ONLY_LABEL = "delta-plus, water only, to 1.25 s"
+STUDIES.append({
+    "id": "dambreak-3d-lobovsky",
+    "case": "dambreak-3d-lobovsky",
+    "title": "3D two-phase dam break, H = 300 mm, Lobovsky et al. 2014 (paper 003 section 4.4)",
+    "length": ("H", 0.3),
+    "reference": "the experiment's water levels H1-H4 and pressures #1-#4 (one record), reference/%s and %s"
+                 % LOBOVSKY_DATA,
+    "error": "the worst of: each gauge's largest |H_SPH - H_exp| / H before its second jump, over 0.10; "
+             "|peak_SPH / peak_exp - 1| of sensors #3 and #4 (5 ms running means), over 0.30; 1 is at a limit "
+             "(notes seeds-003-004 C4 (d), (e); cases/dambreak-3d-lobovsky/README.md)",
+    "threshold": 1.0,
+    "metric": functools.partial(metrics.lobovsky_dambreak,
+                                levels=DATA.format(case="dambreak-3d-lobovsky", file=LOBOVSKY_DATA[0]),
+                                pressures=DATA.format(case="dambreak-3d-lobovsky", file=LOBOVSKY_DATA[1])),
+    # quick: water only, H/dx = 10 on 1 rank (1075 steps, 245 s on this loaded machine); the water-air
+    # case (about 15 000 steps at dx = 0.03 m) for the Slurm array (cases/dambreak-3d-lobovsky/README.md)
+    "rungs": [rung(dx, n, q, label=WATER_ONLY_LABEL, **WATER_ONLY, **LOBOVSKY_SPAN)
+              for dx, n, q in ((0.03, 1, True), (0.015, 2, False), (0.01, 4, False), (0.005, 16, False))] +
+             [rung(dx, n, label="delta-plus, water-air, to 1.25 s", **LOBOVSKY_SPAN)
+              for dx, n in ((0.03, 2), (0.015, 8), (0.01, 16), (0.005, 32))],
+    "plot": "lobovsky",
+})
