@@ -148,7 +148,7 @@ refuses through-file "cannot write to the output folder '$tmp/file/out': Not a d
   build/mpsph run "$case" -o "$tmp/file/out"
 refuses memory-bound 'not enough memory: up to 1e\+10 particles .* need about [0-9.e+]+ GB per rank on 1 rank .* but 16 GB are available per rank' -- \
   env MPSPH_MEMORY_AVAILABLE=16e9 build/mpsph run "$case" -o "$tmp/memory-bound" --set resolution.dx=1e-5
-refuses memory-counted 'not enough memory: 258852 particles \(250000 fluid, 8852 wall\) need about 0\.0861 GB per rank on 2 ranks .* but 0\.05 GB are available per rank \(the node.s available memory over its 2 ranks\)' -- \
+refuses memory-counted 'not enough memory: 258852 particles \(250000 fluid, 8852 wall\) need about 0\.0884 GB per rank on 2 ranks .* but 0\.05 GB are available per rank \(the node.s available memory over its 2 ranks\)' -- \
   env MPSPH_MEMORY_AVAILABLE=1e8 scripts/mpirun -n 2 build/mpsph run "$case" -o "$tmp/memory-counted" \
   --set resolution.dx=0.002
 refuses memory-variable "MPSPH_MEMORY_AVAILABLE: got '2GB', expected a number of bytes > 0" -- \
