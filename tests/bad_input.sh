@@ -138,7 +138,7 @@ else
   echo "ok edge-outdir: an unstable run into a folder of ${#edge} characters wrote its files"
 fi
 # The machine: ranks, output folder, memory.
-refuses ranks 'the domain has 1 cells but 3 ranks were started' -- \
+refuses ranks 'the particles fill 1 cells but 3 ranks were started' -- \
   scripts/mpirun -n 3 build/mpsph run "$case" -o "$tmp/ranks" --set 'walls=[]' \
   --set resolution.dx=0.2 --set time.end=0.01
 refuses proc "cannot write to the output folder '/proc/mpsph-not-writable'" -- \
@@ -148,7 +148,7 @@ refuses through-file "cannot write to the output folder '$tmp/file/out': Not a d
   build/mpsph run "$case" -o "$tmp/file/out"
 refuses memory-bound 'not enough memory: up to 1e\+10 particles .* need about [0-9.e+]+ GB per rank on 1 rank .* but 16 GB are available per rank' -- \
   env MPSPH_MEMORY_AVAILABLE=16e9 build/mpsph run "$case" -o "$tmp/memory-bound" --set resolution.dx=1e-5
-refuses memory-counted 'not enough memory: 258852 particles \(250000 fluid, 8852 wall\) need about 0\.0884 GB per rank on 2 ranks .* but 0\.05 GB are available per rank \(the node.s available memory over its 2 ranks\)' -- \
+refuses memory-counted 'not enough memory: 258852 particles \(250000 fluid, 8852 wall\) need about 0\.0747 GB per rank on 2 ranks .* but 0\.05 GB are available per rank \(the node.s available memory over its 2 ranks\)' -- \
   env MPSPH_MEMORY_AVAILABLE=1e8 scripts/mpirun -n 2 build/mpsph run "$case" -o "$tmp/memory-counted" \
   --set resolution.dx=0.002
 refuses memory-variable "MPSPH_MEMORY_AVAILABLE: got '2GB', expected a number of bytes > 0" -- \

@@ -50,6 +50,12 @@ void init_rows_close(struct init_rows *r);
 /** The source of global row `row`. */
 int init_row_source(const struct init_rows *r, long row);
 
+/** The box [lo, hi] [m] holding source k's candidate nodes, and the box [in_lo, in_hi] strictly
+ *  inside which it has none (a tank's interior; empty, in_lo > in_hi, for other sources);
+ *  axes d < dim. */
+void init_source_extent(const struct init_rows *r, int k, int dim, double *lo, double *hi, double *in_lo,
+                        double *in_hi);
+
 /** Count the particles of rows [first, end) into counts[row - first], calling fn (if not NULL)
  *  for each. Returns -1, or the row where bad input was found (overlapping fluid regions, wall
  *  layers leaving the domain) with a message naming the offending key. */

@@ -234,12 +234,13 @@ int engine_halo_band(const struct case_def *c, int halo_layers);
 /** Add a particle of kind `kind` in fine cell `cell` to the partition weights of its top cell
  *  (PARTITION_CONSTRAINTS values per top cell, parallel/partition.h). */
 void engine_weight_add(const struct engine *e, int64_t *weight, long cell, enum part_kind kind);
-/** Sum the partition weights of all ranks onto rank 0, where every top cell gets one more of
- *  each, so that empty cells still count. */
+/** Sum the partition weights of all ranks onto rank 0. */
 void engine_weights_reduce(const struct engine *e, int64_t *weight);
 /** Partition the top cells with METIS by `weight` (one per top cell, read on rank 0) and adopt
- *  the result in the space. Returns 0, or 1 with a message on rank 0. Collective. */
-int engine_adopt_partition(struct engine *e, const int64_t *weight);
+ *  the result in the space; with `keep`, the ranks keep as much of the space's current
+ *  partition as they can (a re-partition), without it the first partition. Returns 0, or 1 with
+ *  a message on rank 0. Collective. */
+int engine_adopt_partition(struct engine *e, const int64_t *weight, int keep);
 
 /** Generate the initial particles (src/engine/startup.c): count the lattice rows in parallel,
  *  partition the top cells by the counted work, generate on each rank only its own particles

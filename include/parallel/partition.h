@@ -12,12 +12,16 @@
 enum { WEIGHT_WORK, WEIGHT_PARTICLES, PARTITION_CONSTRAINTS };
 
 /** Partition the cells of g among n_parts with METIS_PartGraphKway on the graph of
- *  neighbouring cells, balancing both constraints of `weight` (only read on rank 0): the work
- *  within 3 %, the particles within 10 % (so that no rank holds several times the average
- *  particles, as a rank of cheap wall ghosts would with the work alone).
+ *  neighbouring cells that hold particles (a particle weight above 0), balancing both
+ *  constraints of `weight` (only read on rank 0): the work within 3 %, the particles within
+ *  10 % (so that no rank holds several times the average particles, as a rank of cheap wall
+ *  ghosts would with the work alone). Every empty cell goes to the rank of the nearest occupied
+ *  one. With the current owners `prev` (read on rank 0; NULL at start-up) the parts are
+ *  numbered so that the ranks keep as many of their particles as they can.
  *  The result `owner` (one rank per cell) is broadcast to every rank of comm.
- *  Returns 0, or 1 with a message in err if some part received no cell or METIS failed. */
-int partition_cells(const struct grid *g, const int64_t *weight, int n_parts, MPI_Comm comm,
+ *  Returns 0, or 1 with a message in err if some part received no cell, fewer cells hold
+ *  particles than there are parts, or METIS failed. */
+int partition_cells(const struct grid *g, const int64_t *weight, int n_parts, const int *prev, MPI_Comm comm,
                     int *owner, char *err, size_t err_len);
 
 /** The imbalance max/mean - 1 over the parts of constraint k of `weight` for a given owner map. */

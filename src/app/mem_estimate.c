@@ -5,10 +5,13 @@
  * particles) and six 2D ones (the dam breaks with and without air, a small column in a large
  * tank, 7e3 to 3.7e5 particles) give the process and the bytes per particle of each kind; runs on
  * 2 to 16 ranks (the 3D dam break extruded, the 2D two-phase dam break) the bytes per halo
- * particle and the re-partition's share; a tiny case on 1 to 64 ranks on one node the bytes per
+ * particle and the re-partition's share (refitted after re-partitions came to keep each part on
+ * the rank holding most of it: 2 to 64 ranks, re-partitioning every 2 steps, and the bench's
+ * largest 2D runs on 2 ranks); a tiny case on 1 to 64 ranks on one node the bytes per
  * other rank on the node (Open MPI's shared-memory transport). They reproduce those 21 peaks
  * within 15 %; doc/performance.md compares the estimates with the bench's runs. The cells: every
- * rank holds an owner per top cell; rank 0 builds the METIS graph of the top cells; a rank holds
+ * rank holds an owner per top cell; rank 0 builds the METIS graph of the top cells holding
+ * particles; a rank holds
  * the cell index of its own region and its halo's reach only; at start-up every rank holds the
  * particle count and first id of every row of lattice nodes (engine/startup.c). */
 #include "app/mem_estimate.h"
@@ -27,13 +30,14 @@ static const double kind_bytes[2][KIND_COUNT] = {{[KIND_FLUID] = 340, [KIND_WALL
                                                  {[KIND_FLUID] = 820, [KIND_WALL] = 265}};
 _Static_assert(KIND_COUNT == 2, "measure the bytes of the new kind's particles for kind_bytes");
 static const double halo_particle_bytes[2] = {150, 600};
-static const double moving_bytes[2] = {100, 150};
+static const double moving_bytes[2] = {0, 100};
 #define PROCESS_BYTES 24e6
 #define MPI_PROCESS_BYTES 2e6         /* more per process on several ranks */
 #define MPI_PEER_BYTES 0.4e6          /* and per other rank on the same node (shared-memory transport) */
 #define TOP_CELL_BYTES 8.0            /* owner and local slot of each top cell, every rank */
 #define METIS_BYTES_BASE 64.0         /* METIS graph of the top cells on rank 0: per vertex */
 #define METIS_BYTES_PER_LINK 16.0     /* and per neighbour link */
+#define PARTITION_CELL_BYTES 12.0     /* rank 0 partitioning: a vertex number and a sweep slot per top cell */
 #define LOCAL_CELL_BYTES 24.0         /* cell index of a local cell: start, count, order, rank, bucket */
 #define ROW_BYTES 12.0                /* start-up: count and first id of a row of lattice nodes */
 
@@ -62,9 +66,51 @@ static double rank_halo(const struct case_def *c, double support, double share, 
   return halo_particles(c, layers, edge, share, total, n_ranks);
 }
 
-/* The cell memory of the largest rank (rank 0) [bytes]: the top cells' owners, their METIS
- * graph, and the cell index of a rank's share of the cells held as a square (cube) grown by the
- * halo's reach in whole top cells. */
+/* Axis-d index range [first, last] of the cells of t that meet [lo, hi] (last < first: none). */
+static void cell_range(const struct grid *t, int d, double lo, double hi, long *first, long *last) {
+  *first = (long)fmax(0, floor((lo - t->min[d]) / t->edge[d]));
+  *last = (long)fmin((double)t->n[d] - 1, floor((hi - t->min[d]) / t->edge[d]));
+}
+
+/* Whether cell (i[0], i[1], i[2]) of t lies strictly inside the box [in_lo, in_hi]. */
+static int cell_inside(const struct grid *t, const long *i, const double *in_lo, const double *in_hi) {
+  for (int d = 0; d < t->dim; d++) {
+    double lo = t->min[d] + (double)i[d] * t->edge[d];
+    if (lo <= in_lo[d] || lo + t->edge[d] >= in_hi[d]) return 0;
+  }
+  return 1;
+}
+
+/* Mark the cells of t that may hold nodes of source k (its extent less a tank's interior). */
+static void mark_source(const struct grid *t, const struct init_rows *rows, int k, char *mark) {
+  double lo[3], hi[3], in_lo[3], in_hi[3];
+  long first[3] = {0, 0, 0}, last[3] = {0, 0, 0}, i[3];
+  init_source_extent(rows, k, t->dim, lo, hi, in_lo, in_hi);
+  for (int d = 0; d < t->dim; d++) cell_range(t, d, lo[d], hi[d], &first[d], &last[d]);
+  for (i[2] = first[2]; i[2] <= last[2]; i[2]++)
+    for (i[1] = first[1]; i[1] <= last[1]; i[1]++)
+      for (i[0] = first[0]; i[0] <= last[0]; i[0]++)
+        if (!cell_inside(t, i, in_lo, in_hi)) mark[i[0] + t->n[0] * (i[1] + t->n[1] * i[2])] = 1;
+}
+
+/* The top cells that may hold particles at start-up (a bound: each source's extent), the
+ * vertices of the METIS graph (parallel/partition_metis.c). */
+static long occupied_top_cells(const struct case_def *c, double support, const struct grid *top) {
+  struct init_rows rows;
+  char *mark = calloc(top->n_cells, 1);
+  if (!mark) return top->n_cells;
+  init_rows_open(&rows, c, support);
+  for (int k = 0; k < rows.n_sources; k++) mark_source(top, &rows, k, mark);
+  init_rows_close(&rows);
+  long n = 0;
+  for (long i = 0; i < top->n_cells; i++) n += mark[i];
+  free(mark);
+  return n;
+}
+
+/* The cell memory of the largest rank (rank 0) [bytes]: the top cells' owners, the METIS graph of
+ * those holding particles, and the cell index of a rank's share of the cells held as a square
+ * (cube) grown by the halo's reach in whole top cells. */
 static double cell_bytes(const struct case_def *c, double support, int n_ranks) {
   struct grid g;
   if (engine_cell_grid(c, support, &g)) return INFINITY;
@@ -74,8 +120,9 @@ static double cell_bytes(const struct case_def *c, double support, int n_ranks) 
   double reach = (double)block * ceil((double)layers / (double)block);
   double side = pow((double)g.n_cells / n_ranks, 1.0 / dim);
   double local = fmin((double)g.n_cells, pow(side + 2 * reach, dim));
-  double metis = n_ranks > 1 ? METIS_BYTES_BASE + METIS_BYTES_PER_LINK * links : 0;
-  return (double)top.n_cells * (TOP_CELL_BYTES + metis) + local * LOCAL_CELL_BYTES;
+  double metis = n_ranks > 1 ? (METIS_BYTES_BASE + METIS_BYTES_PER_LINK * links) * occupied_top_cells(c, support, &top) +
+                                   PARTITION_CELL_BYTES * top.n_cells : 0;
+  return (double)top.n_cells * TOP_CELL_BYTES + metis + local * LOCAL_CELL_BYTES;
 }
 
 /* The start-up's row arrays [bytes]. */

@@ -250,6 +250,18 @@ int init_row_source(const struct init_rows *r, long row) {
   return k;
 }
 
+void init_source_extent(const struct init_rows *r, int k, int dim, double *lo, double *hi, double *in_lo,
+                        double *in_hi) {
+  const struct init_source *s = &r->src[k];
+  for (int d = 0; d < dim; d++) {
+    long n = s->n[d];
+    lo[d] = s->tank ? s->axis[d][0] : lattice_coord(&s->l, d, 0);
+    hi[d] = s->tank ? s->axis[d][n - 1] : lattice_coord(&s->l, d, n - 1);
+    in_lo[d] = s->tank && n > 2 * s->layers ? s->axis[d][s->layers - 1] : INFINITY;
+    in_hi[d] = s->tank && n > 2 * s->layers ? s->axis[d][n - s->layers] : -INFINITY;
+  }
+}
+
 /* Position of node (ix, iy, iz) of source s. */
 static void node_at(const struct init_source *s, int dim, long ix, long iy, long iz, double *x) {
   long idx[3] = {ix, iy, iz};

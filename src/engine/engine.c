@@ -52,8 +52,6 @@ void engine_weight_add(const struct engine *e, int64_t *weight, long cell, enum 
 void engine_weights_reduce(const struct engine *e, int64_t *weight) {
   int n = (int)(e->space.top.n_cells * PARTITION_CONSTRAINTS);
   MPI_Reduce(e->rank ? weight : MPI_IN_PLACE, weight, n, MPI_INT64_T, MPI_SUM, 0, e->comm);
-  if (e->rank == 0)
-    for (int k = 0; k < n; k++) weight[k] += 1;
 }
 
 /* The partition weights of the top cells from this rank's owned particles, their work scaled by
@@ -106,10 +104,11 @@ static void build_halo(struct engine *e) {
   free(reads);
 }
 
-int engine_adopt_partition(struct engine *e, const int64_t *weight) {
+int engine_adopt_partition(struct engine *e, const int64_t *weight, int keep) {
   char err[512];
   int *owner = mem_calloc(e->space.top.n_cells, sizeof(int), "top cell owners");
-  int status = partition_cells(&e->space.top, weight, e->n_ranks, e->comm, owner, err, sizeof(err));
+  int status = partition_cells(&e->space.top, weight, e->n_ranks, keep ? e->space.top_owner : NULL,
+                              e->comm, owner, err, sizeof(err));
   if (status) report(e, err);
   else space_set_owner(&e->space, owner);
   free(owner);
@@ -119,7 +118,7 @@ int engine_adopt_partition(struct engine *e, const int64_t *weight) {
 int engine_repartition(struct engine *e) {
   double t0 = MPI_Wtime();
   int64_t *w = top_cell_weights(e);
-  int status = engine_adopt_partition(e, w);
+  int status = engine_adopt_partition(e, w, 1);
   free(w);
   if (status) return 1;
   redistribute_parts(&e->space, &e->p, e->comm);

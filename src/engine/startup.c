@@ -219,7 +219,7 @@ static int number_and_generate(struct engine *e, const struct init_rows *rows, c
   int status = init_no_fluid(e->c, n.n_fluid, err, sizeof err);
   if (status && e->rank == 0) fprintf(stderr, "mpsph: %s\n", err);
   if (!status) engine_print_layout(e, (double)n.n_fluid, (double)n.n_wall);
-  if (!status) status = engine_adopt_partition(e, weight);
+  if (!status) status = engine_adopt_partition(e, weight, 0);
   if (!status) status = generate_own(e, rows, first_id, &n);
   free(first_id);
   return status;
