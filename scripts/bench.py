@@ -54,7 +54,7 @@ FULL = {"dx": {"1phase": [0.0085, 0.00424, 0.00212], "2phase": [0.024, 0.012, 0.
         "steps": [100, 40, 12], "weak_dx": [0.012, 0.0085, 0.006], "weak_steps": 20,
         "term_dx": 0.012, "term_steps": 20, "sp_dx": 0.00424, "sp_steps": 60,
         "hdf5_particles": [160000, 2000000], "repeats": 3, "peak_seconds": 2.0,
-        "cluster_ranks": [1, 2, 4, 8, 16, 32, 64], "cluster_per_rank": 20000, "cluster_dx": 0.02,
+        "cluster_ranks": [1, 2, 4, 8, 16, 32, 64], "cluster_per_rank": 50000, "cluster_dx": 0.02,
         "cluster_steps": 4, "peer_seconds": 0.1, "peer_front_seconds": None}
 QUICK = {"dx": {"1phase": [0.02, 0.0142, 0.01], "2phase": [0.024, 0.017, 0.012]},
          "steps": [10, 8, 6], "weak_dx": [0.024, 0.017, 0.012], "weak_steps": 6,

@@ -512,8 +512,8 @@ class Report:
             self.w("", "From %d to %d ranks the largest rank's project arrays per particle it owns vary by %.1f %% "
                    "and its peak resident memory by %.1f %% (target: within 15 %% of flat); the peak of the "
                    "largest rank but rank 0 by %.1f %% (%s MB). Rank 0 also runs METIS on the graph of "
-                   "all top cells, whose memory grows with their number, hence with the rank count in a "
-                   "weak scaling. The estimate of "
+                   "the top cells holding particles, whose memory grows with their number, hence with the "
+                   "rank count in a weak scaling. The estimate of "
                    "`check --ranks` is within %.1f %% of the measured peak in every run above and in the 2D "
                    "runs of section 4 (target 20 %%)."
                    % (big[0], big[-1], 100 * flat_p, 100 * flat_r, 100 * flat_o,
