@@ -5,15 +5,15 @@
  * particles) and six 2D ones (the dam breaks with and without air, a small column in a large
  * tank, 7e3 to 3.7e5 particles) give the process and the bytes per particle of each kind; runs on
  * 2 to 16 ranks (the 3D dam break extruded, the 2D two-phase dam break) the bytes per halo
- * particle and the re-partition's share (refitted after re-partitions came to keep each part on
- * the rank holding most of it: 2 to 64 ranks, re-partitioning every 2 steps, and the bench's
- * largest 2D runs on 2 ranks); a tiny case on 1 to 64 ranks on one node the bytes per
- * other rank on the node (Open MPI's shared-memory transport). They reproduce those 21 peaks
- * within 15 %; doc/performance.md compares the estimates with the bench's runs. The cells: every
- * rank holds an owner per top cell; rank 0 builds the METIS graph of the top cells holding
- * particles; a rank holds
- * the cell index of its own region and its halo's reach only; at start-up every rank holds the
- * particle count and first id of every row of lattice nodes (engine/startup.c). */
+ * particle; a tiny case on 1 to 64 ranks on one node the bytes per other rank on the node (Open
+ * MPI's shared-memory transport). They reproduce those 21 peaks within 15 %. The re-partition's
+ * share was refitted once re-partitions kept each part on the rank holding most of it, on 19 runs
+ * of 2 to 64 ranks (the 3D dam break extruded to 2e4 and 5e4 particles per rank, the 2D dam
+ * breaks; most re-partitioning every 2 steps): within 17.1 % of the largest rank's peak.
+ * doc/performance.md compares the estimates with the bench's runs. The cells: every rank holds an
+ * owner per top cell; rank 0 builds the METIS graph of the top cells holding particles; a rank
+ * holds the cell index of its own region and its halo's reach only; at start-up every rank holds
+ * the particle count and first id of every row of lattice nodes (engine/startup.c). */
 #include "app/mem_estimate.h"
 
 #include <math.h>
