@@ -11,6 +11,9 @@
  *  PARTITION_CONSTRAINTS values per cell, in this order. */
 enum { WEIGHT_WORK, WEIGHT_PARTICLES, PARTITION_CONSTRAINTS };
 
+/** The most a part may hold of each constraint, as a multiple of the mean over the parts. */
+static const double partition_tolerance[PARTITION_CONSTRAINTS] = {[WEIGHT_WORK] = 1.03, [WEIGHT_PARTICLES] = 1.10};
+
 /** Partition the cells of g among n_parts with METIS_PartGraphKway on the graph of
  *  neighbouring cells that hold particles (a particle weight above 0), balancing both
  *  constraints of `weight` (only read on rank 0): the work within 3 %, the particles within

@@ -124,6 +124,10 @@ long space_assign_cells(const struct space *s, struct parts *p, long first, long
  *  the local cells in global order. */
 void space_sort(struct space *s, struct parts *p, long first, long n);
 
+/** Keep the owned particles whose cell this rank owns, in their order, in the first owned slots
+ *  (n_owned becomes their count); the others are dropped (sent away first). */
+void space_keep_own(const struct space *s, struct parts *p);
+
 /** Rebuild cell_start/cell_count for owned and halo particles (both sorted by (cell, id)). */
 void space_index(struct space *s, const struct parts *p);
 

@@ -23,6 +23,8 @@
 #include "case/init.h"
 #include "base/kinds.h"
 #include "engine/engine.h"
+#include "parallel/partition.h"
+#include "base/mem.h"
 
 /* Bytes of an owned particle of each kind, of a halo particle, and more per owned particle on
  * several ranks (the packed copies of the particles a re-partition moves), in 2D and 3D. */
@@ -95,13 +97,9 @@ static void mark_source(const struct grid *t, const struct init_rows *rows, int 
 
 /* The top cells that may hold particles at start-up (a bound: each source's extent), the
  * vertices of the METIS graph (parallel/partition_metis.c). */
-static long occupied_top_cells(const struct case_def *c, double support, const struct grid *top) {
-  struct init_rows rows;
-  char *mark = calloc(top->n_cells, 1);
-  if (!mark) return top->n_cells;
-  init_rows_open(&rows, c, support);
-  for (int k = 0; k < rows.n_sources; k++) mark_source(top, &rows, k, mark);
-  init_rows_close(&rows);
+static long occupied_top_cells(const struct init_rows *rows, const struct grid *top) {
+  char *mark = mem_calloc(top->n_cells, 1, "occupied top cells");
+  for (int k = 0; k < rows->n_sources; k++) mark_source(top, rows, k, mark);
   long n = 0;
   for (long i = 0; i < top->n_cells; i++) n += mark[i];
   free(mark);
@@ -111,7 +109,7 @@ static long occupied_top_cells(const struct case_def *c, double support, const s
 /* The cell memory of the largest rank (rank 0) [bytes]: the top cells' owners, the METIS graph of
  * those holding particles, and the cell index of a rank's share of the cells held as a square
  * (cube) grown by the halo's reach in whole top cells. */
-static double cell_bytes(const struct case_def *c, double support, int n_ranks) {
+static double cell_bytes(const struct case_def *c, double support, const struct init_rows *rows, int n_ranks) {
   struct grid g;
   if (engine_cell_grid(c, support, &g)) return INFINITY;
   long block = space_top_block(&g, n_ranks, c->top_cells_per_rank);
@@ -120,24 +118,10 @@ static double cell_bytes(const struct case_def *c, double support, int n_ranks) 
   double reach = (double)block * ceil((double)layers / (double)block);
   double side = pow((double)g.n_cells / n_ranks, 1.0 / dim);
   double local = fmin((double)g.n_cells, pow(side + 2 * reach, dim));
-  double metis = n_ranks > 1 ? (METIS_BYTES_BASE + METIS_BYTES_PER_LINK * links) * occupied_top_cells(c, support, &top) +
+  double metis = n_ranks > 1 ? (METIS_BYTES_BASE + METIS_BYTES_PER_LINK * links) * occupied_top_cells(rows, &top) +
                                    PARTITION_CELL_BYTES * top.n_cells : 0;
   return (double)top.n_cells * TOP_CELL_BYTES + metis + local * LOCAL_CELL_BYTES;
 }
-
-/* The start-up's row arrays [bytes]. */
-static double startup_bytes(const struct case_def *c, double support) {
-  struct init_rows rows;
-  init_rows_open(&rows, c, support);
-  double bytes = (double)rows.n_rows * ROW_BYTES;
-  init_rows_close(&rows);
-  return bytes;
-}
-
-/* The partition's tolerances (parallel/partition_metis.c): a rank holds at most this many times
- * the mean work and the mean particles. */
-#define WORK_TOLERANCE 1.03
-#define PARTICLE_TOLERANCE 1.10
 
 /* A line a . n = b in the plane of the two kinds' counts n. */
 struct line {
@@ -145,7 +129,8 @@ struct line {
 };
 
 /* The owned particles of each kind of the rank that needs the most memory: the corner of
- * {0 <= n_k <= n_kind[k], work <= tolerance x mean, particles <= tolerance x mean} with the most
+ * {0 <= n_k <= n_kind[k], work <= tolerance x mean, particles <= tolerance x mean} (the
+ * partition's tolerances, parallel/partition.h) with the most
  * bytes (a linear programme in two unknowns: its optimum lies where two of the bounds meet). */
 static void largest_share(const double *n_kind, const double *bytes, int n_ranks, double *owned) {
   double work = 0, particles = 0;
@@ -154,8 +139,8 @@ static void largest_share(const double *n_kind, const double *bytes, int n_ranks
     particles += n_kind[k];
   }
   struct line bound[] = {{{1, 0}, 0}, {{0, 1}, 0}, {{1, 0}, n_kind[0]}, {{0, 1}, n_kind[1]},
-                         {{part_kinds[0].work, part_kinds[1].work}, WORK_TOLERANCE * work / n_ranks},
-                         {{1, 1}, PARTICLE_TOLERANCE * particles / n_ranks}};
+                         {{part_kinds[0].work, part_kinds[1].work}, partition_tolerance[WEIGHT_WORK] * work / n_ranks},
+                         {{1, 1}, partition_tolerance[WEIGHT_PARTICLES] * particles / n_ranks}};
   int n_bounds = (int)(sizeof bound / sizeof bound[0]);
   double best = -1;
   for (int i = 0; i < n_bounds; i++)
@@ -192,8 +177,11 @@ struct mem_estimate mem_estimate_rank(const struct case_def *c, double support, 
   m.particle_bytes += m.halo * halo_particle_bytes[c->dimension - 2];
   if (n_ranks > 1) m.particle_bytes += share * moving_bytes[c->dimension - 2];
   m.process = PROCESS_BYTES + (n_ranks > 1 ? MPI_PROCESS_BYTES + MPI_PEER_BYTES * (per_node - 1) : 0);
-  m.cells = cell_bytes(c, support, n_ranks);
-  m.startup = startup_bytes(c, support);
+  struct init_rows rows;   /* the lattice rows: where particles start, and the start-up's row arrays */
+  init_rows_open(&rows, c, support);
+  m.cells = cell_bytes(c, support, &rows, n_ranks);
+  m.startup = (double)rows.n_rows * ROW_BYTES;
+  init_rows_close(&rows);
   m.total = m.process + m.cells + m.startup + m.particle_bytes;
   return m;
 }

@@ -92,7 +92,7 @@ struct run_summary {
   double migrate_max, migrate_mean, output_max, steps_max, dropped_max, dropped_mean, cpu_max, cpu_mean;
   double *per_rank;                /* PER_RANK figures of each rank; rank 0 only */
   double mem_sum[N_MEM];           /* the project's arrays by owner, summed over the ranks [bytes] */
-  double halo_particles;           /* halo copies summed over the ranks */
+  double halo_particles;           /* halo copies summed over the ranks (from per_rank; rank 0 only) */
   double halo_particles_max;       /* on the rank with the most */
   double halo_neighbours_max;      /* neighbouring ranks (proxies) of the rank with the most */
   double halo_messages, halo_bytes;   /* sent since start, summed over the ranks */
@@ -114,9 +114,6 @@ static void summarise(struct engine *e, long steps, double loop_seconds, struct 
   for (int k = 0; k < N_MEM; k++) rss[RANK_PROJECT] += mem[k];
   local_counts(e, rss + RANK_OWNED);
   MPI_Reduce(mem, s->mem_sum, N_MEM, MPI_DOUBLE, MPI_SUM, 0, e->comm);
-  double halo = (double)e->p.n_halo;
-  MPI_Reduce(&halo, &s->halo_particles, 1, MPI_DOUBLE, MPI_SUM, 0, e->comm);
-  s->halo_particles_max = max_over_ranks(e, halo);
   s->halo_neighbours_max = max_over_ranks(e, (double)e->halo.n_proxies);
   double sent[2] = {(double)e->halo.n_messages, (double)e->halo.n_bytes}, sent_sum[2] = {0, 0};
   MPI_Reduce(sent, sent_sum, 2, MPI_DOUBLE, MPI_SUM, 0, e->comm);
@@ -140,6 +137,11 @@ static void summarise(struct engine *e, long steps, double loop_seconds, struct 
   if (e->rank == 0) all = mem_calloc(PER_RANK * (size_t)e->n_ranks, sizeof(double), "per-rank memory report");
   MPI_Gather(rss, PER_RANK, MPI_DOUBLE, all, PER_RANK, MPI_DOUBLE, 0, e->comm);
   s->per_rank = all;
+  s->halo_particles = s->halo_particles_max = 0;
+  for (int r = 0; all && r < e->n_ranks; r++) {
+    s->halo_particles += all[PER_RANK * r + RANK_HALO];
+    if (all[PER_RANK * r + RANK_HALO] > s->halo_particles_max) s->halo_particles_max = all[PER_RANK * r + RANK_HALO];
+  }
 }
 
 /* Rank 0: the summary ctx (a struct run_summary) as CSV rows name,kind,value,seconds_max,

@@ -9,7 +9,6 @@
 #include "base/mem.h"
 
 #define METIS_SEED 42
-static const real_t imbalance_allowed[PARTITION_CONSTRAINTS] = {[WEIGHT_WORK] = 1.03f, [WEIGHT_PARTICLES] = 1.10f};
 
 /* Whether cell c holds particles. */
 static int occupied(const int64_t *weight, long c) { return weight[c * PARTITION_CONSTRAINTS + WEIGHT_PARTICLES] > 0; }
@@ -63,7 +62,7 @@ static int metis_parts(struct cell_graph *G, int n_parts, idx_t *part) {
   options[METIS_OPTION_SEED] = METIS_SEED;
   options[METIS_OPTION_NUMBERING] = 0;
   real_t ubvec[PARTITION_CONSTRAINTS];
-  for (int k = 0; k < PARTITION_CONSTRAINTS; k++) ubvec[k] = imbalance_allowed[k];
+  for (int k = 0; k < PARTITION_CONSTRAINTS; k++) ubvec[k] = (real_t)partition_tolerance[k];
   return METIS_PartGraphKway(&G->n_vertices, &ncon, G->xadj, G->adjncy, G->vwgt, NULL, NULL, &nparts, NULL,
                              ubvec, options, &objval, part);
 }
@@ -104,14 +103,12 @@ static int by_particles(const void *a, const void *b) {
   return by_pair(a, b);
 }
 
-/* The (part, rank) pairs of the occupied cells with the particles they share, largest first;
- * *n their number. */
-static struct overlap *overlaps(const struct grid *g, const int64_t *weight, const int *part_of,
+/* The (part, rank) pairs of the n_vertices occupied cells with the particles they share,
+ * largest first; *n their number. */
+static struct overlap *overlaps(const struct grid *g, const int64_t *weight, long n_vertices, const int *part_of,
                                 const int *rank_of, long *n) {
+  struct overlap *o = mem_calloc(n_vertices + 1, sizeof(*o), "partition overlaps");
   long m = 0;
-  for (long c = 0; c < g->n_cells; c++) m += occupied(weight, c);
-  struct overlap *o = mem_calloc(m + 1, sizeof(*o), "partition overlaps");
-  m = 0;
   for (long c = 0; c < g->n_cells; c++)
     if (occupied(weight, c))
       o[m++] = (struct overlap){part_of[c], rank_of[c], weight[c * PARTITION_CONSTRAINTS + WEIGHT_PARTICLES]};
@@ -126,14 +123,15 @@ static struct overlap *overlaps(const struct grid *g, const int64_t *weight, con
   return o;
 }
 
-/* Renumber the parts of owner so that each goes to the current rank (prev) sharing the most
+/* Renumber the parts of owner (n_vertices occupied cells) so that each goes to the current rank (prev) sharing the most
  * particles with it, greedily from the largest overlap; the parts left take the ranks left in
  * increasing order. */
-static void match_ranks(const struct grid *g, const int64_t *weight, const int *prev, int n_parts, int *owner) {
+static void match_ranks(const struct grid *g, const int64_t *weight, long n_vertices, const int *prev, int n_parts,
+                        int *owner) {
   int *rank_of_part = mem_calloc(n_parts, sizeof(int), "part renumbering");
   char *rank_taken = mem_calloc(n_parts, 1, "part renumbering");
   long n;
-  struct overlap *o = overlaps(g, weight, owner, prev, &n);
+  struct overlap *o = overlaps(g, weight, n_vertices, owner, prev, &n);
   for (int p = 0; p < n_parts; p++) rank_of_part[p] = -1;
   for (long i = 0; i < n; i++)
     if (rank_of_part[o[i].part] < 0 && !rank_taken[o[i].rank]) {
@@ -194,7 +192,7 @@ static void partition_on_root(const struct grid *g, const int64_t *weight, int n
     int metis = metis_partition(g, weight, n_vertices, vertex, n_parts, owner);
     status[0] = metis == METIS_OK ? 0 : 1;
     if (metis == METIS_OK) status[1] = empty_part(g, owner, n_parts);
-    if (metis == METIS_OK && prev) match_ranks(g, weight, prev, n_parts, owner);
+    if (metis == METIS_OK && prev) match_ranks(g, weight, n_vertices, prev, n_parts, owner);
   }
   free(vertex);
 }
@@ -223,6 +221,7 @@ int partition_cells(const struct grid *g, const int64_t *weight, int n_parts, co
   MPI_Bcast(owner, (int)g->n_cells, MPI_INT, 0, comm);
   return 0;
 }
+
 double partition_imbalance(const struct grid *g, const int64_t *weight, int k, const int *owner,
                            int n_parts) {
   double *load = mem_calloc(n_parts, sizeof(double), "load per rank"), total = 0, max = 0;

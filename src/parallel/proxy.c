@@ -482,21 +482,16 @@ static int64_t first_lost(const struct halo *h, const struct space *s, const str
  * stayers. */
 static void pack_strays(struct halo *h, const struct space *s, struct parts *p, long *n_out) {
   int w = parts_packed_size(p, PART_MIGRATE);
-  long kept = 0;
   for (long i = 0; i < p->n_owned; i++) {
     int dest = space_cell_owner(s, p->cell[i]);
-    if (dest == s->rank) {
-      if (kept != i) parts_copy_one(p, kept, p, i);
-      kept++;
-      continue;
-    }
-    struct proxy *px = &h->proxies[h->proxy_of_rank[dest]];
+    if (dest == s->rank) continue;
     int k = h->proxy_of_rank[dest];
+    struct proxy *px = &h->proxies[k];
     reserve_buf(&px->send_buf, &px->send_cap, (n_out[k] + 1) * w);
     parts_pack(p, PART_MIGRATE, &i, 1, px->send_buf + n_out[k] * w);
     n_out[k]++;
   }
-  p->n_owned = kept;
+  space_keep_own(s, p);
 }
 
 int64_t halo_migrate(struct halo *h, const struct space *s, struct parts *p) {

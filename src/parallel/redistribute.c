@@ -26,17 +26,6 @@ static long *group_leavers(const struct space *s, const struct parts *p, int *se
   return order;
 }
 
-/* Keep the particles that stay on this rank, in their order, in the first slots. */
-static void compact_stayers(const struct space *s, struct parts *p) {
-  long kept = 0;
-  for (long i = 0; i < p->n_owned; i++) {
-    if (space_cell_owner(s, p->cell[i]) != s->rank) continue;
-    if (kept != i) parts_copy_one(p, kept, p, i);
-    kept++;
-  }
-  p->n_owned = kept;
-}
-
 void redistribute_parts(const struct space *s, struct parts *p, MPI_Comm comm) {
   int nr = s->n_ranks, w = parts_packed_size(p, PART_MIGRATE);
   int *cnt = mem_calloc(4 * nr, sizeof(int), "migration counts"), *send_count = cnt, *recv_count = cnt + nr;
@@ -53,7 +42,7 @@ void redistribute_parts(const struct space *s, struct parts *p, MPI_Comm comm) {
   double *rbuf = mem_calloc((size_t)n_recv * w + 1, sizeof(double), "migration receive buffer");
   parts_pack(p, PART_MIGRATE, order, n_leave, sbuf);
   free(order);
-  compact_stayers(s, p);
+  space_keep_own(s, p);
   MPI_Datatype particle;   /* one packed particle: w doubles */
   MPI_Type_contiguous(w, MPI_DOUBLE, &particle);
   MPI_Type_commit(&particle);

@@ -269,3 +269,13 @@ void neighbour_ranges(const struct space *s, long c, struct neighbour_ranges *r)
     }
   }
 }
+
+void space_keep_own(const struct space *s, struct parts *p) {
+  long kept = 0;
+  for (long i = 0; i < p->n_owned; i++) {
+    if (space_cell_owner(s, p->cell[i]) != s->rank) continue;
+    if (kept != i) parts_copy_one(p, kept, p, i);
+    kept++;
+  }
+  p->n_owned = kept;
+}
