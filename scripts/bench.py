@@ -3,7 +3,8 @@
 
 Runs the single- and two-phase dam breaks at three sizes on 1 and 2 ranks (repeated), weak
 scaling 1 -> 2 -> 4 ranks, weak scaling of a 3D dam break to 64 ranks (oversubscribed: counts,
-memory, and the memory estimate of `check --ranks`), the scene with each optional term switched
+memory, and the memory estimate of `check --ranks`), the 3D dam break on 1 rank at three sizes
+against its 2D slice (the 3D step of issue 24), the scene with each optional term switched
 off, the single-phase scene
 through the multiphase and the SINGLE_PHASE=1 builds, one core's multiply-add peak and the HDF5
 snapshot bandwidth against a raw write, and, given a DualSPHysics binary, the peer comparison
@@ -36,7 +37,9 @@ MPIRUN = os.path.join(ROOT, "scripts", "mpirun")
 # exchange messages.
 CLUSTER_ENV = dict(os.environ, OMPI_MCA_btl="self,tcp")
 CASES = {"1phase": "cases/dambreak-1phase/case.yaml", "2phase": "cases/dambreak-2phase/case.yaml"}
-CASE_FILES = dict(CASES, **{"3d": "scripts/bench/dambreak-3d.yaml"})   # with the cluster group's scene
+CASE_FILES = dict(CASES, **{"3d": "scripts/bench/dambreak-3d.yaml",   # the cluster and step3d groups' scene
+                            "3d-slice": "scripts/bench/dambreak-3d-slice.yaml"})   # its 2D slice (step3d)
+SLICE_FLUID_AREA = 1.228 * 0.55   # the 2D slice's water column [m^2]: its dx for a given fluid count
 
 # Floating-point operations per neighbour pair of the main pass (pass_fluid_rhs.c, fluid_sums),
 # counted by hand from the source for a same-phase fluid pair in 2D (the most frequent kind):
@@ -55,13 +58,14 @@ FULL = {"dx": {"1phase": [0.0085, 0.00424, 0.00212], "2phase": [0.024, 0.012, 0.
         "term_dx": 0.012, "term_steps": 20, "sp_dx": 0.00424, "sp_steps": 60,
         "hdf5_particles": [160000, 2000000], "repeats": 3, "peak_seconds": 2.0,
         "cluster_ranks": [1, 2, 4, 8, 16, 32, 64], "cluster_per_rank": 50000, "cluster_dx": 0.02,
-        "cluster_steps": 4, "peer_seconds": 0.1, "peer_front_seconds": None}
+        "cluster_steps": 4, "peer_seconds": 0.1, "peer_front_seconds": None,
+        "step3d_dx": [0.04, 0.03, 0.02], "step3d_steps": [20, 12, 6]}
 QUICK = {"dx": {"1phase": [0.02, 0.0142, 0.01], "2phase": [0.024, 0.017, 0.012]},
          "steps": [10, 8, 6], "weak_dx": [0.024, 0.017, 0.012], "weak_steps": 6,
          "term_dx": 0.04, "term_steps": 6, "sp_dx": 0.01, "sp_steps": 10,
          "hdf5_particles": [100000], "repeats": 2, "peak_seconds": 0.3,
          "cluster_ranks": [1, 2, 4], "cluster_per_rank": 10000, "cluster_dx": 0.04, "cluster_steps": 2,
-         "peer_seconds": 0.01, "peer_front_seconds": 0.1}
+         "peer_seconds": 0.01, "peer_front_seconds": 0.1, "step3d_dx": [0.08, 0.06], "step3d_steps": [4, 3]}
 
 # The two-phase scene with every optional term on, and each term switched off in turn.
 TERMS_ON = ["physics.acoustic_damper=10", "physics.free_surface=on", "physics.tensile_control=true",
@@ -152,19 +156,22 @@ def derive(rows, case):
     cpu = by.get("steps_without_final_output_cpu")
     d = {"steps_cpu": num(cpu["seconds_mean"]) if cpu else t_steps, "ranks": ranks, "steps": steps, "fluid": fluid, "wall": wall, "loop_s": loop, "steps_s": t_steps,
          "psps_core": fluid * steps / t_steps / ranks}
-    shares, halo = {}, 0.0
-    for r in rows:
+    shares, halo, by_pass = {}, 0.0, {}
+    for r in rows:   # the operations of one pass (the text before ':', e.g. the wall ghosts' lists and interpolation) add up
         if r["kind"] == "pass":
             short = r["name"].split(":")[0].split(" (")[0]
-            shares[short] = num(r["seconds_mean"]) / loop
-            pairs = num(r["pairs"])
-            if pairs:
-                d["pairs/s/core " + short] = pairs / (num(r["seconds_mean"]) * ranks)
-                if short.startswith(MAIN_PASS) and case in FLOPS_PER_PAIR:
-                    d["main_flops_core"] = pairs * FLOPS_PER_PAIR[case] / (num(r["seconds_mean"]) * ranks)
-                    d["pairs_per_particle_step"] = pairs / (fluid * steps * 4)
+            seconds, pairs = by_pass.get(short, (0.0, 0.0))
+            by_pass[short] = (seconds + num(r["seconds_mean"]), pairs + num(r["pairs"]))
         elif r["kind"] == "halo":
             halo += num(r["seconds_mean"])
+    for short, (seconds, pairs) in by_pass.items():
+        shares[short] = seconds / loop
+        if pairs:
+            d["pairs/s/core " + short] = pairs / (seconds * ranks)
+            if short.startswith(MAIN_PASS):
+                d["pairs_per_particle_step"] = pairs / (fluid * steps * 4)
+                if case in FLOPS_PER_PAIR:
+                    d["main_flops_core"] = pairs * FLOPS_PER_PAIR[case] / (seconds * ranks)
     shares["halo exchange and wait"] = halo / loop
     shares["migration, sort, re-partition"] = num(by["migration"]["seconds_mean"]) / loop
     shares["operations dropped after step 1 (free surface auto: none found)"] = (
@@ -274,6 +281,20 @@ class Bench:
             run["estimate"] = memory_estimate("3d", ranks, sets + ["resolution.dx=%g" % dx], per_node=1)
             self.res[("cluster", ranks)] = run
 
+    def step3d(self):
+        """The 3D step (issue 24): the 3D dam break at each step3d_dx on 1 rank, each against its 2D
+        slice (same scheme, kernel, h/dx and terms) with as many fluid particles and 3 times the
+        steps, the two in turn within each repeat so that a change of the load hits both alike."""
+        cfg = self.cfg
+        for k, dx in enumerate(cfg["step3d_dx"][:self.n_sizes]):
+            runs3, runs2, dx2 = [], [], None
+            for rep in range(self.repeats):
+                self.say("step3d: dx=%g (repeat %d)" % (dx, rep + 1))
+                runs3.append(run_case("build/mpsph", "3d", dx, cfg["step3d_steps"][k], 1, self.work))
+                dx2 = dx2 or round((SLICE_FLUID_AREA / runs3[0]["fluid"]) ** 0.5, 6)
+                runs2.append(run_case("build/mpsph", "3d-slice", dx2, 3 * cfg["step3d_steps"][k], 1, self.work))
+            self.res[("step3d", k)] = (dx, runs3, dx2, runs2)
+
     def terms(self):
         """The two-phase scene with every term on, then each switched off (1 rank); the variants
         in turn within each repeat, so that a change of the machine's load hits all alike."""
@@ -335,7 +356,7 @@ def main():
     ap.add_argument("--out")
     ap.add_argument("--dualsphysics", help="DualSPHysics CPU binary for the peer comparison")
     ap.add_argument("--dualsphysics-src", help="its source tree (default: three levels above the binary)")
-    ap.add_argument("--only", help="comma-separated groups (sizes,weak,terms,single_phase,hdf5,cluster,peer) to run "
+    ap.add_argument("--only", help="comma-separated groups (sizes,weak,terms,single_phase,hdf5,cluster,step3d,peer) to run "
                     "again into the results saved by the last run; the report names them")
     ap.add_argument("--report-only", action="store_true",
                     help="rewrite the report from the results saved by the last run into the same --out "
@@ -367,6 +388,7 @@ def main():
     b.single_phase()
     b.hdf5()
     b.cluster()
+    b.step3d()
     b.peer()
     peaks.append(b.peak())
     m["load_end"] = os.getloadavg()
@@ -381,6 +403,7 @@ def rerun(a, saved, out):
     """Run the groups named by --only again into the saved results, then rewrite the report."""
     with open(saved, "rb") as f:
         b, m, peaks, cfg, quick = pickle.load(f)
+    cfg = b.cfg = dict(QUICK if quick else FULL, **cfg)   # with the settings of groups added since
     sh(["make", "--no-print-directory", "build/mpsph", "build/bench/bench_hdf5", "build/bench/mpsph-single-phase"])
     b.log = sys.stdout
     b.peer_binary, b.peer_src = a.dualsphysics, a.dualsphysics_src

@@ -1,5 +1,6 @@
 /* nlist.h — per-step neighbour lists of the owned particles of the kinds that have one (KIND_LISTED
- * in base/kinds.h: the fluid), Verlet lists without a skin of their own (the cell skin bounds how
+ * in base/kinds.h: the fluid) and of points that stay fixed within a step (the mirror points of
+ * the fixed walls' ghosts), Verlet lists without a skin of their own (the cell skin bounds how
  * far particles may move within a step), stored as one bit per candidate of the cell stencil. */
 #ifndef MPSPH_NLIST_H
 #define MPSPH_NLIST_H
@@ -26,7 +27,17 @@ struct nlist {
   int *candidates;       /* scratch: the candidate slots of the cell being read (nlist_enter_cell) */
   long capacity, cell_capacity, candidate_capacity;   /* words, cells, slots */
   double radius2;        /* build radius^2 [m^2] */
+  /* the lists at points (nlist_point_add): header and mask, one after the other in the order added */
+  uint64_t *point_bits;
+  long point_capacity, point_words;   /* words held, words in use */
 };
+
+/** Words of a mask over the candidates of the stencil ranges r. */
+static inline int nlist_words(const struct neighbour_ranges *r) {
+  long candidates = 0;
+  for (int q = 0; q < r->n; q++) candidates += r->count[q];
+  return (int)((candidates + 63) / 64);
+}
 
 /** The neighbours of one particle, read back from its mask with neighbours_next (which
  *  consumes the bits: copy it to read the list again). */
@@ -65,6 +76,28 @@ static inline struct neighbours nlist_of(const struct nlist *l, long k, long f) 
   const uint64_t *mask = l->bits + l->cells[k].first_word + f * words;
   return (struct neighbours){mask, l->candidates, words, 0, words ? mask[0] : 0};
 }
+
+/** The header of a list at a point whose mask keeps `words` words from word `first` on. */
+static inline uint64_t nlist_point_header(int first, int words) { return (uint64_t)first << 32 | (uint32_t)words; }
+
+/** The words a point's list keeps (after its header), and the first of them in *first. */
+static inline int nlist_point_words(uint64_t header, int *first) {
+  *first = (int)(header >> 32);
+  return (int)(uint32_t)header;
+}
+
+/** Forget the lists at points; the next ones are built within `radius` [m]. */
+void nlist_points_clear(struct nlist *l, double radius);
+
+/** Append the list of point x [m] (the mirror point of a fixed wall's ghost): a mask over the
+ *  candidates of the stencil ranges r, bit b set when candidate b is not a boundary particle
+ *  (KIND_BOUNDARY, base/kinds.h: the points interpolate the fluid) and lies within the build
+ *  radius of x at the current positions. Returns the word where it starts: a header word
+ *  (nlist_point_header: the first word of the mask kept and how many are kept, the zero words
+ *  before and after left out; 0 when no bit is set), then those words. Like the particles'
+ *  lists, it stays valid for the step when x is fixed (the cell skin bounds how far the
+ *  candidates move). */
+long nlist_point_add(struct nlist *l, const struct parts *p, const double *x, const struct neighbour_ranges *r);
 
 /** An empty list (the kinds without lists). */
 static inline struct neighbours nlist_none(void) { return (struct neighbours){0}; }

@@ -54,12 +54,13 @@ void pass_neighbour_lists(struct pass_ctx *ctx);
 void pass_volumes(struct pass_ctx *ctx);
 
 /** Shepard sums at one point: {sum W V, and sum W V times p, rho, u[3]} over every fluid phase
- *  (all) and over each phase on its own (phase[k]); per phase also sum W V rho r[3] when
- *  with_rho_r (the density-weighted interface pressure's ghosts need it). */
+ *  (all; left zero in a one-phase case, where it would equal phase[0]) and over each phase on its
+ *  own (phase[k]); per phase also sum W V rho r[3] when with_rho_r (the density-weighted
+ *  interface pressure's ghosts need it). */
 enum { SHEPARD_W, SHEPARD_P, SHEPARD_RHO, SHEPARD_U, SHEPARD_RHO_R = SHEPARD_U + 3, SHEPARD_SUMS = SHEPARD_RHO_R + 3 };
 struct shepard {
   double all[SHEPARD_SUMS], phase[CASE_MAX_PHASES][SHEPARD_SUMS];
-  int with_rho_r;
+  int with_rho_r, one_phase;
 };
 
 /** Called for each slot j within the kernel support of a point, with wv = W V_j [-]. */
@@ -78,11 +79,17 @@ void shepard_at(const struct pass_ctx *ctx, const double *xs, struct shepard *s,
  *  mirror array), turned with the wall. */
 void wall_mirror_point(const struct pass_ctx *ctx, long k, double *xs);
 
+/** Once per step, before pass_wall_ghosts: the lists of the mirror points of the owned ghosts of
+ *  fixed walls (nlist_point_add: the fluid within the cell edge), which pass_wall_ghosts reads at
+ *  every stage instead of scanning the mirror point's stencil. */
+void pass_wall_ghost_lists(struct pass_ctx *ctx);
+
 /** Wall ghosts: Shepard interpolation of p, u, rho at the mirror point (over every phase, or
  *  with the density-weighted interface pressure over the phase with the largest Shepard weight
  *  there), hydrostatic and inertial pressure correction (from the mirror point, or with the
  *  density-weighted interface pressure and several phases from each neighbour with its own
- *  density) and free-/no-slip velocity (Marrone et al. 2011). Owned ghosts only. */
+ *  density) and free-/no-slip velocity (Marrone et al. 2011). Owned ghosts only; the ghosts of
+ *  fixed walls read the lists of this step's pass_wall_ghost_lists. */
 void pass_wall_ghosts(struct pass_ctx *ctx);
 
 /** Scheme delta-sph, per stage: the same-phase Shepard density of the owned fluid (paper 001

@@ -122,7 +122,7 @@ static int halo_field_list(struct engine *e, int mask, double **f) {
   return n;
 }
 
-/* engine_assemble makes at most 17 operations (ENGINE_MAX_OPS, engine.h), whatever the case; one
+/* engine_assemble makes at most 18 operations (ENGINE_MAX_OPS, engine.h), whatever the case; one
  * more is a programming error, stopped here before it overflows e->ops. */
 static void add_op(struct engine *e, struct stage_op op) {
   if (e->n_ops == ENGINE_MAX_OPS) {
@@ -218,6 +218,7 @@ void engine_assemble_stage(struct engine *e) {
   engine_add_op(e, "halo: positions, velocities, densities, pressures", NULL, HF_POS | HF_VEL | HF_RHO | HF_P, 0);
   if (s->pressure) s->pressure(e);
   if (f & FEAT_WALLS) {
+    engine_add_op(e, "wall ghosts: lists at the fixed walls' mirror points (once per step)", pass_wall_ghost_lists, 0, 1);
     engine_add_op(e, "wall ghosts: Shepard interpolation at mirror points", pass_wall_ghosts, 0, 0);
     engine_add_op(e, "halo: wall ghost values", NULL, HF_VEL | HF_RHO | HF_P | HF_MASS, 0);
   }
@@ -350,6 +351,7 @@ void engine_ghosts_now(struct engine *e) {
     halo_update(&e->halo, fields, halo_field_list(e, HF_RHO_SHEPARD | HF_P, fields));
   }
   if (walls) {
+    pass_wall_ghost_lists(&ctx);
     pass_wall_ghosts(&ctx);
     halo_update(&e->halo, fields, halo_field_list(e, HF_VEL | HF_RHO | HF_P | HF_MASS, fields));
   }

@@ -1,5 +1,5 @@
 /* nlist.c — per-step neighbour lists built from the cell index, stored as bit masks over the
- * candidates of each cell's stencil. */
+ * candidates of each cell's stencil: of the owned fluid, and of fixed points (mirror points). */
 #include <stdlib.h>
 #include <string.h>
 #include "parallel/nlist.h"
@@ -15,17 +15,38 @@ static void *grow(void *a, long *capacity, long needed, size_t size) {
   return q;
 }
 
-/* Set in mask the bits of the candidates r within radius2 of owned slot i (not i itself). */
-static void mark_neighbours(const struct nlist *l, const struct parts *p, long i,
-                            const struct neighbour_ranges *r, uint64_t *mask) {
-  const int dim = p->dim;
+/* mark_within in `dim` dimensions (a constant where it is inlined: the axis loop unrolls). */
+static inline void mark_within_dim(const struct parts *p, const int dim, const double *x, long self,
+                                   unsigned skip_kinds, double radius2, const struct neighbour_ranges *r,
+                                   uint64_t *mask) {
+  const double *xj[3] = {p->x[0], p->x[1], dim == 3 ? p->x[2] : NULL};
   long b = 0;
   for (int k = 0; k < r->n; k++)
     for (long j = r->start[k]; j < r->start[k] + r->count[k]; j++, b++) {
+      if (skip_kinds && part_has(p->phase[j], skip_kinds)) continue;
       double r2 = 0;
-      for (int d = 0; d < dim; d++) r2 += (p->x[d][i] - p->x[d][j]) * (p->x[d][i] - p->x[d][j]);
-      if (r2 < l->radius2 && j != i) mask[b / WORD_BITS] |= (uint64_t)1 << (b % WORD_BITS);
+      for (int d = 0; d < dim; d++) r2 += (x[d] - xj[d][j]) * (x[d] - xj[d][j]);
+      if (r2 < radius2 && j != self) mask[b / WORD_BITS] |= (uint64_t)1 << (b % WORD_BITS);
     }
+}
+
+/* Set in mask the bits of the candidates r within radius2 of point x, but slot self and the
+ * candidates of the kinds skip_kinds (a constant where it is inlined, so the kind test costs one
+ * marker comparison, or nothing with 0). The
+ * squared distance is summed as the pair loops sum it, so a candidate is listed exactly when they
+ * find it near. */
+static inline void mark_within(const struct parts *p, const double *x, long self, unsigned skip_kinds,
+                               double radius2, const struct neighbour_ranges *r, uint64_t *mask) {
+  if (p->dim == 3) mark_within_dim(p, 3, x, self, skip_kinds, radius2, r, mask);
+  else mark_within_dim(p, 2, x, self, skip_kinds, radius2, r, mask);
+}
+
+/* Set in mask the bits of the candidates r within the build radius of owned slot i (not i itself). */
+static void mark_neighbours(const struct nlist *l, const struct parts *p, long i,
+                            const struct neighbour_ranges *r, uint64_t *mask) {
+  double x[3] = {0, 0, 0};
+  for (int d = 0; d < p->dim; d++) x[d] = p->x[d][i];
+  mark_within(p, x, i, 0, l->radius2, r, mask);
 }
 
 /* Particles of cell c that have a neighbour list (of a KIND_LISTED kind, base/kinds.h). */
@@ -66,6 +87,26 @@ void nlist_build(struct nlist *l, const struct space *s, const struct parts *p, 
   }
 }
 
+void nlist_points_clear(struct nlist *l, double radius) {
+  l->radius2 = radius * radius;
+  l->point_words = 0;
+}
+
+long nlist_point_add(struct nlist *l, const struct parts *p, const double *x, const struct neighbour_ranges *r) {
+  long first = l->point_words;
+  int words = nlist_words(r), lo = 0, hi;
+  l->point_bits = grow(l->point_bits, &l->point_capacity, first + 1 + words, sizeof(uint64_t));
+  uint64_t *mask = l->point_bits + first + 1;
+  if (words > 0) memset(mask, 0, words * sizeof(uint64_t));
+  mark_within(p, x, -1, KIND_BOUNDARY, l->radius2, r, mask);
+  for (hi = words; hi > 0 && !mask[hi - 1]; hi--) continue;
+  while (lo < hi && !mask[lo]) lo++;
+  if (lo > 0) memmove(mask, mask + lo, (size_t)(hi - lo) * sizeof(uint64_t));
+  l->point_bits[first] = hi > lo ? nlist_point_header(lo, hi - lo) : 0;
+  l->point_words = first + 1 + (hi - lo);
+  return first;
+}
+
 void nlist_enter_cell(struct nlist *l, const struct neighbour_ranges *r) {
   int *slot = l->candidates;
   for (int q = 0; q < r->n; q++)
@@ -76,10 +117,11 @@ void nlist_free(struct nlist *l) {
   free(l->cells);
   free(l->bits);
   free(l->candidates);
+  free(l->point_bits);
   memset(l, 0, sizeof(*l));
 }
 
 long nlist_bytes(const struct nlist *l) {
   return l->capacity * (long)sizeof(uint64_t) + l->cell_capacity * (long)sizeof(struct nlist_cell) +
-         l->candidate_capacity * (long)sizeof(int);
+         l->candidate_capacity * (long)sizeof(int) + l->point_capacity * (long)sizeof(uint64_t);
 }

@@ -10,20 +10,49 @@
 #include <string.h>
 #include "physics/passes.h"
 
-long visit_near(const struct pass_ctx *ctx, const double *xs, int with_walls, near_fn fn, void *arg) {
+/* Call fn for candidate j if it lies within the kernel support of xs; 1 if it did. */
+static inline int visit_if_near(const struct pass_ctx *ctx, const double *xs, long j, near_fn fn, void *arg) {
   const struct parts *p = ctx->p;
+  double r2 = 0;
+  for (int d = 0; d < p->dim; d++) r2 += (xs[d] - p->x[d][j]) * (xs[d] - p->x[d][j]);
+  if (r2 >= ctx->prm->kern.support2) return 0;
+  fn(arg, ctx, j, kernel_w(&ctx->prm->kern, r2) * p->m[j] / p->rho[j]);
+  return 1;
+}
+
+/* The stencil ranges of the cell holding point xs. */
+static void ranges_at(const struct pass_ctx *ctx, const double *xs, struct neighbour_ranges *r) {
+  neighbour_ranges(ctx->space, grid_cell_clamped(&ctx->space->grid, xs), r);
+}
+
+long visit_near(const struct pass_ctx *ctx, const double *xs, int with_walls, near_fn fn, void *arg) {
   struct neighbour_ranges r;
-  int dim = p->dim;
   long n = 0;
-  neighbour_ranges(ctx->space, grid_cell_clamped(&ctx->space->grid, xs), &r);
+  ranges_at(ctx, xs, &r);
   for (int k = 0; k < r.n; k++)
     for (long j = r.start[k]; j < r.start[k] + r.count[k]; j++) {
-      if (part_has(p->phase[j], KIND_BOUNDARY) && !with_walls) continue;
-      double r2 = 0;
-      for (int d = 0; d < dim; d++) r2 += (xs[d] - p->x[d][j]) * (xs[d] - p->x[d][j]);
-      if (r2 >= ctx->prm->kern.support2) continue;
-      fn(arg, ctx, j, kernel_w(&ctx->prm->kern, r2) * p->m[j] / p->rho[j]);
-      n++;
+      if (part_has(ctx->p->phase[j], KIND_BOUNDARY) && !with_walls) continue;
+      n += visit_if_near(ctx, xs, j, fn, arg);
+    }
+  return n;
+}
+
+/* visit_near without walls, over the candidates of xs's stencil whose bits are set in the
+ * list at point (nlist_point_add: a header word, then the kept words of the mask): the same
+ * calls in the same order. */
+static long visit_listed(const struct pass_ctx *ctx, const double *xs, const uint64_t *point, near_fn fn,
+                         void *arg) {
+  int first;
+  const int words = nlist_point_words(point[0], &first);
+  struct neighbour_ranges r;
+  long n = 0, range_first = 0;   /* candidate number of the first slot of range k */
+  int k = 0;
+  if (words) ranges_at(ctx, xs, &r);
+  for (int w = 0; w < words; w++)
+    for (uint64_t bits = point[1 + w]; bits; bits &= bits - 1) {
+      long b = 64L * (first + w) + __builtin_ctzll(bits);
+      while (b >= range_first + r.count[k]) range_first += r.count[k++];
+      n += visit_if_near(ctx, xs, r.start[k] + (b - range_first), fn, arg);
     }
   return n;
 }
@@ -41,14 +70,20 @@ static void add_shepard(void *arg, const struct pass_ctx *ctx, long j, double wv
   struct shepard *s = arg;
   const struct parts *p = ctx->p;
   double *own = s->phase[p->phase[j]];
-  add_values(s->all, p, j, wv);
+  if (!s->one_phase) add_values(s->all, p, j, wv);
   add_values(own, p, j, wv);
   for (int d = 0; s->with_rho_r && d < p->dim; d++) own[SHEPARD_RHO_R + d] += wv * p->rho[j] * p->x[d][j];
 }
 
-void shepard_at(const struct pass_ctx *ctx, const double *xs, struct shepard *s, long *pairs) {
+/* Empty Shepard sums, with the density-weighted moments if the ghosts need them. */
+static void shepard_clear(const struct pass_ctx *ctx, struct shepard *s) {
   memset(s, 0, sizeof(*s));
   s->with_rho_r = ctx->c->interface_pressure == IFACE_P_DENSITY_WEIGHTED && ctx->c->n_phases > 1;
+  s->one_phase = ctx->c->n_phases == 1;
+}
+
+void shepard_at(const struct pass_ctx *ctx, const double *xs, struct shepard *s, long *pairs) {
+  shepard_clear(ctx, s);
   *pairs += visit_near(ctx, xs, 0, add_shepard, s);
 }
 
@@ -94,9 +129,9 @@ static void ghost_from_shepard(struct pass_ctx *ctx, long k, const double *xs, c
   /* the sums the ghost takes its values from: with the density-weighted interface pressure its
    * majority phase's only (the ghost stands for that phase, theory section 4); with the paper's
    * pair sum every phase's (Marrone et al. 2011: a ghost beside a water particle in air carries
-   * part of its pressure) */
+   * part of its pressure; with one phase the same sums) */
   int ph = majority_phase(ctx, s);
-  const double *src = ctx->c->interface_pressure == IFACE_P_DENSITY_WEIGHTED ? s->phase[ph] : s->all;
+  const double *src = ctx->c->interface_pressure == IFACE_P_DENSITY_WEIGHTED || s->one_phase ? s->phase[ph] : s->all;
   if (src[SHEPARD_W] > 0) {
     for (int d = 0; d < dim; d++) u[d] = src[SHEPARD_U + d] / src[SHEPARD_W];
     pressure = ghost_pressure(ctx, k, xs, src, aw, s->with_rho_r);
@@ -122,15 +157,41 @@ void wall_mirror_point(const struct pass_ctx *ctx, long k, double *xs) {
   for (int d = 0; d < 3; d++) xs[d] = d < p->dim ? p->x[d][k] + off[d] : 0.0;
 }
 
+/* 1 if ghost k has a list at its mirror point, built once per step: its wall is fixed (not moved
+ * by a motion, nor a body), so the mirror point stays put within the step. */
+static int listed_ghost(const struct pass_ctx *ctx, long k) {
+  return part_has(ctx->p->phase[k], KIND_MIRRORED) && !ctx->c->walls[ctx->p->wall[k]].moving;
+}
+
+void pass_wall_ghost_lists(struct pass_ctx *ctx) {
+  nlist_points_clear(ctx->nl, ctx->prm->list_radius);
+  for (long k = 0; k < ctx->p->n_owned; k++) {
+    if (!listed_ghost(ctx, k)) continue;
+    double xs[3];
+    struct neighbour_ranges r;
+    wall_mirror_point(ctx, k, xs);
+    ranges_at(ctx, xs, &r);
+    nlist_point_add(ctx->nl, ctx->p, xs, &r);
+  }
+}
+
 void pass_wall_ghosts(struct pass_ctx *ctx) {
   struct parts *p = ctx->p;
-  long pairs = 0;
+  long pairs = 0, word = 0;   /* the next list's first word: lists follow the listed ghosts' order */
   for (long k = 0; k < p->n_owned; k++) {
     if (!part_has(p->phase[k], KIND_MIRRORED)) continue;
     double xs[3];
-    wall_mirror_point(ctx, k, xs);
     struct shepard s;
-    shepard_at(ctx, xs, &s, &pairs);
+    wall_mirror_point(ctx, k, xs);
+    if (listed_ghost(ctx, k)) {
+      const uint64_t *point = ctx->nl->point_bits + word;
+      shepard_clear(ctx, &s);
+      pairs += visit_listed(ctx, xs, point, add_shepard, &s);
+      int first;
+      word += 1 + nlist_point_words(point[0], &first);
+    } else {
+      shepard_at(ctx, xs, &s, &pairs);
+    }
     ghost_from_shepard(ctx, k, xs, &s);
   }
   ctx->out.pairs += pairs;
