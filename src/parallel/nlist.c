@@ -32,9 +32,8 @@ static inline void mark_within_dim(const struct parts *p, const int dim, const d
 
 /* Set in mask the bits of the candidates r within radius2 of point x, but slot self and the
  * candidates of the kinds skip_kinds (a constant where it is inlined, so the kind test costs one
- * marker comparison, or nothing with 0). The
- * squared distance is summed as the pair loops sum it, so a candidate is listed exactly when they
- * find it near. */
+ * marker comparison, or nothing with 0). The squared distance is summed as the pair loops sum it,
+ * so a candidate is listed exactly when they find it near. */
 static inline void mark_within(const struct parts *p, const double *x, long self, unsigned skip_kinds,
                                double radius2, const struct neighbour_ranges *r, uint64_t *mask) {
   if (p->dim == 3) mark_within_dim(p, 3, x, self, skip_kinds, radius2, r, mask);
