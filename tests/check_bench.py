@@ -4,9 +4,8 @@ OUT/performance.md exist; the CSV has bench_report.py's columns, every number is
 median <= max, and each metric has the sign and range its definition allows; particle-steps/s
 per core is in a plausible range, agrees with the same run's main-pass figures, and no pass runs
 above the measured peak; every benchmark of the suite (scenes x ranks, weak scaling, each
-optional term, the single-phase build, the HDF5 sizes, the 3D weak-scaling rank counts) has its
-rows in the CSV and in the
-report, whose sections and target verdicts are all there; the peer comparison (DualSPHysics) is
+optional term, the single-phase build, the HDF5 sizes, the 3D weak-scaling rank counts, the 3D
+step's sizes against their 2D slices) has its rows in the CSV and in the report, whose sections and target verdicts are all there; the peer comparison (DualSPHysics) is
 either marked skipped with no rows, or has its time ratios on 1 and 2 cores (the report's table
 holding the CSV's medians) and both codes' front errors. Prints each problem and exits 1 if
 there is one.
@@ -26,12 +25,12 @@ import bench_report  # noqa: E402
 COLUMNS = ["group", "case", "particles", "ranks", "steps", "metric", "median", "min", "max", "repeats", "unit"]
 SECTIONS = ["## Targets", "## 1. Throughput", "## 2. Where", "## 3. Floating", "## 4. Memory",
             "## 5. Parallel", "## 6. Snapshot", "## 7. Cost", "## 8. Single-phase", "## 9. Weak scaling",
-            "## 10. Peer comparison", "## What bounds"]
+            "## 10. Peer comparison", "## 11. The 3D step", "## What bounds"]
 PEER_SKIPPED = "Skipped: no DualSPHysics binary was given."
-# Target verdicts: five, the efficiency target's when a scene has bench_report.EFF_MIN_FLUID
-# fluid particles (not at the quick sizes), and the cluster group's two when it ran on 8 ranks or
-# more at two rank counts (not at the quick sizes).
-N_TARGETS = 5
+# Target verdicts: seven (five of issue 6, the 3D step's two), the efficiency target's when a
+# scene has bench_report.EFF_MIN_FLUID fluid particles (not at the quick sizes), and the cluster
+# group's two when it ran on 8 ranks or more at two rank counts (not at the quick sizes).
+N_TARGETS = 7
 # Particle-steps/s per core. A particle-step is four RK stages over about 45 neighbours with at
 # least 62 flops per pair in the main pass alone (bench.FLOPS_PER_PAIR): over 1e4 flops, so
 # 1e7/s would take 1e11 flop/s, six times this machine's measured one-core peak (16.5 Gflop/s).
@@ -109,6 +108,10 @@ def expected_rows(cfg, n_sizes):
     for ranks in cfg["cluster_ranks"]:
         for metric in ("project_bytes_max_rank", "estimate_over_peak"):
             want[("cluster", "3d", ranks, metric)] = 1
+    sizes3d = min(n_sizes, len(cfg["step3d_dx"]))
+    for case in ("3d", "3d-slice"):
+        for metric in ("particle_steps_per_s_per_core", "bytes_per_particle_peak", "share wall ghosts"):
+            want[("step3d", case, 1, metric)] = sizes3d
     return want
 
 
@@ -174,7 +177,7 @@ def peer_problems(md, rows):
     return out
 
 
-def report_problems(md, rows, cfg):
+def report_problems(md, rows, cfg, n_sizes):
     """Sections, target verdicts and one row per benchmark in the report; the throughput table
     holds the CSV's particle-steps/s."""
     out = ["performance.md: missing section %r" % s for s in SECTIONS if not re.search("^" + re.escape(s), md, re.M)]
@@ -193,6 +196,7 @@ def report_problems(md, rows, cfg):
     rows_wanted += [("snapshot bandwidth, %d particles on %d ranks" % (n, ranks), r"%d \| \d+ \| %d" % (n, ranks))
                     for n in cfg["hdf5_particles"] for ranks in (1, 2)]
     rows_wanted += [("3D weak scaling on %d ranks" % n, r"%d \| [0-9.]+ \| \d+ \| \d+" % n) for n in cfg["cluster_ranks"]]
+    rows_wanted += [("3D step at dx %g" % dx, r"%g \| \d+ \+ \d+" % dx) for dx in cfg["step3d_dx"][:n_sizes]]
     for what, pattern in rows_wanted:
         if not re.search(r"^\| %s \|" % pattern, md, re.M):
             out.append("performance.md: no table row for %s" % what)
@@ -213,7 +217,7 @@ def main():
         if rows is not None:
             problems += csv_problems(rows, cfg, a.sizes)
             with open(md_path) as f:
-                problems += report_problems(f.read(), rows, cfg)
+                problems += report_problems(f.read(), rows, cfg, a.sizes)
     for p in problems:
         print(p)
     print("bench outputs: %s" % ("%d problems" % len(problems) if problems else "ok"))
