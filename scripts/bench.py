@@ -28,6 +28,8 @@ import subprocess
 import sys
 import time
 
+import yaml
+
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 MPIRUN = os.path.join(ROOT, "scripts", "mpirun")
 # The cluster group's transport: TCP between all ranks. Open MPI's shared-memory transport holds
@@ -39,7 +41,6 @@ CLUSTER_ENV = dict(os.environ, OMPI_MCA_btl="self,tcp")
 CASES = {"1phase": "cases/dambreak-1phase/case.yaml", "2phase": "cases/dambreak-2phase/case.yaml"}
 CASE_FILES = dict(CASES, **{"3d": "scripts/bench/dambreak-3d.yaml",   # the cluster and step3d groups' scene
                             "3d-slice": "scripts/bench/dambreak-3d-slice.yaml"})   # its 2D slice (step3d)
-SLICE_FLUID_AREA = 1.228 * 0.55   # the 2D slice's water column [m^2]: its dx for a given fluid count
 
 # Floating-point operations per neighbour pair of the main pass (pass_fluid_rhs.c, fluid_sums),
 # counted by hand from the source for a same-phase fluid pair in 2D (the most frequent kind):
@@ -132,6 +133,14 @@ def tank_sets(width):
     """The 3D scene extruded to `width` m across (z): tank, column and domain."""
     return ["fluids.0.box.max=[1.228,0.55,%g]" % width, "walls.0.box.max=[3.22,1.0,%g]" % width,
             "domain.max=[3.52,1.3,%g]" % (width + 0.3)]
+
+
+def slice_fluid_area():
+    """The water column's area of the 3D step's 2D slice, from its case file [m^2]: the slice's dx
+    for a given fluid count."""
+    with open(os.path.join(ROOT, CASE_FILES["3d-slice"])) as f:
+        box = yaml.safe_load(f)["fluids"][0]["box"]
+    return (box["max"][0] - box["min"][0]) * (box["max"][1] - box["min"][1])
 
 
 def particles_of(case, dx, sets):
@@ -291,7 +300,7 @@ class Bench:
             for rep in range(self.repeats):
                 self.say("step3d: dx=%g (repeat %d)" % (dx, rep + 1))
                 runs3.append(run_case("build/mpsph", "3d", dx, cfg["step3d_steps"][k], 1, self.work))
-                dx2 = dx2 or round((SLICE_FLUID_AREA / runs3[0]["fluid"]) ** 0.5, 6)
+                dx2 = dx2 or round((slice_fluid_area() / runs3[0]["fluid"]) ** 0.5, 6)
                 runs2.append(run_case("build/mpsph", "3d-slice", dx2, 3 * cfg["step3d_steps"][k], 1, self.work))
             self.res[("step3d", k)] = (dx, runs3, dx2, runs2)
 

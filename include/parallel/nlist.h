@@ -80,11 +80,14 @@ static inline struct neighbours nlist_of(const struct nlist *l, long k, long f) 
 /** The header of a list at a point whose mask keeps `words` words from word `first` on. */
 static inline uint64_t nlist_point_header(int first, int words) { return (uint64_t)first << 32 | (uint32_t)words; }
 
-/** The words a point's list keeps (after its header), and the first of them in *first. */
-static inline int nlist_point_words(uint64_t header, int *first) {
-  *first = (int)(header >> 32);
-  return (int)(uint32_t)header;
+/** The words the list at `point` keeps after its header, and the first of them in *first. */
+static inline int nlist_point_words(const uint64_t *point, int *first) {
+  *first = (int)(point[0] >> 32);
+  return (int)(uint32_t)point[0];
 }
+
+/** The list after the one at `point` (the lists follow each other in the order added). */
+static inline const uint64_t *nlist_point_next(const uint64_t *point) { return point + 1 + (uint32_t)point[0]; }
 
 /** Forget the lists at points; the next ones are built within `radius` [m]. */
 void nlist_points_clear(struct nlist *l, double radius);
@@ -92,12 +95,12 @@ void nlist_points_clear(struct nlist *l, double radius);
 /** Append the list of point x [m] (the mirror point of a fixed wall's ghost): a mask over the
  *  candidates of the stencil ranges r, bit b set when candidate b is not a boundary particle
  *  (KIND_BOUNDARY, base/kinds.h: the points interpolate the fluid) and lies within the build
- *  radius of x at the current positions. Returns the word where it starts: a header word
- *  (nlist_point_header: the first word of the mask kept and how many are kept, the zero words
- *  before and after left out; 0 when no bit is set), then those words. Like the particles'
+ *  radius of x at the current positions: a header word (nlist_point_header: the first word of
+ *  the mask kept and how many are kept, the zero words before and after left out; 0 when no bit
+ *  is set), then those words. Like the particles'
  *  lists, it stays valid for the step when x is fixed (the cell skin bounds how far the
  *  candidates move). */
-long nlist_point_add(struct nlist *l, const struct parts *p, const double *x, const struct neighbour_ranges *r);
+void nlist_point_add(struct nlist *l, const struct parts *p, const double *x, const struct neighbour_ranges *r);
 
 /** An empty list (the kinds without lists). */
 static inline struct neighbours nlist_none(void) { return (struct neighbours){0}; }

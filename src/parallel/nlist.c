@@ -91,7 +91,7 @@ void nlist_points_clear(struct nlist *l, double radius) {
   l->point_words = 0;
 }
 
-long nlist_point_add(struct nlist *l, const struct parts *p, const double *x, const struct neighbour_ranges *r) {
+void nlist_point_add(struct nlist *l, const struct parts *p, const double *x, const struct neighbour_ranges *r) {
   long first = l->point_words;
   int words = nlist_words(r), lo = 0, hi;
   l->point_bits = grow(l->point_bits, &l->point_capacity, first + 1 + words, sizeof(uint64_t));
@@ -103,7 +103,6 @@ long nlist_point_add(struct nlist *l, const struct parts *p, const double *x, co
   if (lo > 0) memmove(mask, mask + lo, (size_t)(hi - lo) * sizeof(uint64_t));
   l->point_bits[first] = hi > lo ? nlist_point_header(lo, hi - lo) : 0;
   l->point_words = first + 1 + (hi - lo);
-  return first;
 }
 
 void nlist_enter_cell(struct nlist *l, const struct neighbour_ranges *r) {

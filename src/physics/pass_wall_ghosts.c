@@ -43,7 +43,7 @@ long visit_near(const struct pass_ctx *ctx, const double *xs, int with_walls, ne
 static long visit_listed(const struct pass_ctx *ctx, const double *xs, const uint64_t *point, near_fn fn,
                          void *arg) {
   int first;
-  const int words = nlist_point_words(point[0], &first);
+  const int words = nlist_point_words(point, &first);
   struct neighbour_ranges r;
   long n = 0, range_first = 0;   /* candidate number of the first slot of range k */
   int k = 0;
@@ -177,18 +177,17 @@ void pass_wall_ghost_lists(struct pass_ctx *ctx) {
 
 void pass_wall_ghosts(struct pass_ctx *ctx) {
   struct parts *p = ctx->p;
-  long pairs = 0, word = 0;   /* the next list's first word: lists follow the listed ghosts' order */
+  long pairs = 0;
+  const uint64_t *point = ctx->nl->point_bits;   /* the next list: they follow the listed ghosts' order */
   for (long k = 0; k < p->n_owned; k++) {
     if (!part_has(p->phase[k], KIND_MIRRORED)) continue;
     double xs[3];
     struct shepard s;
     wall_mirror_point(ctx, k, xs);
     if (listed_ghost(ctx, k)) {
-      const uint64_t *point = ctx->nl->point_bits + word;
       shepard_clear(ctx, &s);
       pairs += visit_listed(ctx, xs, point, add_shepard, &s);
-      int first;
-      word += 1 + nlist_point_words(point[0], &first);
+      point = nlist_point_next(point);
     } else {
       shepard_at(ctx, xs, &s, &pairs);
     }
