@@ -276,14 +276,16 @@ class Bench:
     def cluster(self):
         """Weak scaling to 64 ranks (oversubscribed): the 3D dam break extruded across (z) so that
         every rank holds about cluster_per_rank particles at a fixed dx (at least 0.25 m across),
-        with a re-partition every 2 steps; once each (its counts do not depend on the load), with
+        with a re-partition every 2 steps that balances particle work alone (parallel.balance=work: the
+        measured timings of oversubscribed ranks would make the partition, hence the memory of the
+        largest rank, differ from run to run); once each (its counts do not depend on the load), with
         the memory `check --ranks` estimates. Over TCP (CLUSTER_ENV): the ranks stand for ranks on
         separate nodes, as a weak scaling on a cluster has a fixed number of ranks per node."""
         cfg, dx = self.cfg, self.cfg["cluster_dx"]
         n1, n2 = particles_of("3d", dx, tank_sets(1.0)), particles_of("3d", dx, tank_sets(2.0))
         for ranks in cfg["cluster_ranks"]:
             width = max(0.25, round(1.0 + (ranks * cfg["cluster_per_rank"] - n1) / (n2 - n1), 3))
-            sets = tank_sets(width) + ["parallel.repartition_every=2"]
+            sets = tank_sets(width) + ["parallel.repartition_every=2", "parallel.balance=work"]
             self.say("cluster: ranks=%d width=%g m" % (ranks, width))
             run = run_case("build/mpsph", "3d", dx, cfg["cluster_steps"], ranks, self.work, sets, CLUSTER_ENV)
             run["width"] = width

@@ -38,6 +38,7 @@ enum interface_pressure { IFACE_P_SUM = 0, IFACE_P_DENSITY_WEIGHTED };
 enum interface_viscosity { IFACE_VISC_NONE = 0, IFACE_VISC_HARMONIC };
 enum spc_model { SPC_PRESENT = 0, SPC_CONVENTIONAL };   /* paper 003 section 3 / section 2.3 */
 enum dissipation_form { DISSIPATION_CONSISTENT = 0, DISSIPATION_PRINTED };
+enum balance_kind { BALANCE_TIME = 0, BALANCE_WORK };   /* what a re-partition balances */
 
 /** A geometric shape: box {min,max}, circle {centre,radius[,inner_radius]} (disc in 2D, ball in
  *  3D; an annulus or shell with inner_radius > 0) or polygon (2D only, vertices in order). [m] */
@@ -186,6 +187,7 @@ struct case_def {
   /* parallel */
   double repartition_threshold;  /* re-partition when (max-min)/mean load exceeds this */
   long repartition_every;        /* force a re-partition every N steps (0 = only on imbalance) */
+  enum balance_kind balance;     /* balance measured compute time, or particle work alone */
   long top_cells_per_rank;       /* the top cells' size: the largest blocks leaving this many per rank */
   long max_steps;                /* stop after this many steps (0 = no limit) */
 };

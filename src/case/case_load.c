@@ -43,6 +43,7 @@ static const char *const IFACE_P_NAMES[] = {"sum", "density-weighted", NULL};
 static const char *const IFACE_VISC_NAMES[] = {"none", "harmonic", NULL};
 static const char *const SPC_MODEL_NAMES[] = {"present", "conventional", NULL};
 static const char *const DISSIPATION_NAMES[] = {"consistent", "printed", NULL};
+static const char *const BALANCE_NAMES[] = {"time", "work", NULL};
 static const char *const RAMP_NAMES[] = {"none", "linear", "smooth", NULL};
 
 /* The keys allowed in the mappings that a list reader of its own reads (the others follow from
@@ -1436,6 +1437,9 @@ static const struct case_key CASE_KEYS[] = {
              .def = {0.1}, .doc = "re-partition when the compute-time imbalance max/mean − 1 exceeds this (section 6.3) [-]"),
     CASE_KEY("parallel", "repartition_every", KEY_COUNT, repartition_every, .rule = &R_COUNT,
              .doc = "re-partition every N steps; `0`: only on imbalance"),
+    CASE_KEY("parallel", "balance", KEY_CHOICE, balance, .names = BALANCE_NAMES, .def = {BALANCE_TIME},
+             .doc = "what a re-partition balances: the measured compute time, or the particle work alone, "
+             "which gives the same partition on every run (section 6.3)"),
     CASE_KEY("parallel", "top_cells_per_rank", KEY_COUNT, top_cells_per_rank, .rule = &R_TOP_CELLS,
              .def = {256}, .doc = "the top cells METIS partitions are the largest blocks of cells that leave at "
              "least this many per rank (section 6.1); fewer: larger blocks, a smaller METIS graph, a coarser balance"),

@@ -35,8 +35,10 @@ static double rank_work(const struct engine *e) {
 }
 
 /* This rank's measured seconds per work unit relative to the mean over ranks (1 when no time has
- * been measured yet), so that cell weights follow the measured compute time. */
+ * been measured yet, or when the case balances particle work alone), so that cell weights follow
+ * the measured compute time. */
 static double cost_factor(const struct engine *e) {
+  if (e->c->balance == BALANCE_WORK) return 1.0;
   double work = rank_work(e);
   double rate = work > 0 ? e->t_compute / work : 0, sum;
   MPI_Allreduce(&rate, &sum, 1, MPI_DOUBLE, MPI_SUM, e->comm);
@@ -168,7 +170,8 @@ static double rank_imbalance(const struct engine *e, double local) {
 
 /* Re-partition when forced by repartition_every, or when the compute time since the last check
  * (every BALANCE_CHECK_EVERY steps) is imbalanced beyond the case's threshold; while too little
- * time has been measured to be meaningful, the particle work is used instead. */
+ * time has been measured to be meaningful, or when the case balances work alone, the particle
+ * work is used instead. */
 static int balance(struct engine *e) {
   const struct case_def *c = e->c;
   if (e->n_ranks == 1) return 0;
@@ -176,7 +179,7 @@ static int balance(struct engine *e) {
   if (e->step % BALANCE_CHECK_EVERY) return 0;
   double parts_imb = rank_imbalance(e, rank_work(e)), time_imb = rank_imbalance(e, e->t_compute), t_sum;
   MPI_Allreduce(&e->t_compute, &t_sum, 1, MPI_DOUBLE, MPI_SUM, e->comm);
-  double imb = t_sum > MIN_MEASURED_SECONDS ? time_imb : parts_imb;
+  double imb = t_sum > MIN_MEASURED_SECONDS && c->balance == BALANCE_TIME ? time_imb : parts_imb;
   int status = 0;
   if (e->step - e->last_repartition_step >= REPARTITION_MIN_GAP && imb > c->repartition_threshold) {
     if (e->rank == 0)

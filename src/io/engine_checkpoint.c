@@ -66,6 +66,7 @@ static void allow_restart_changes(struct case_def *old, const struct case_def *n
   old->checkpoint_interval = now->checkpoint_interval;
   old->repartition_threshold = now->repartition_threshold;
   old->repartition_every = now->repartition_every;
+  old->balance = now->balance;
 }
 
 /* The first line where texts a and b differ, and the top-level key above it, into msg. */
