@@ -16,8 +16,9 @@
 
 #define RENORM_MIN_DET 0.1   /* det of the matrix below which L falls back to the identity */
 
-/* Sums of particle i; inlined with literal dim, shift, multi (several phases) and renorm (the
- * density gradient, read only by the density diffusion) so that the loops specialise. The arrays
+/* Sums of particle i; inlined with literal dim, shift, multi (0: one phase, 1: several, 2: several
+ * phases or one, with the own-phase damper's divergence) and renorm (the density gradient, read
+ * only by the density diffusion) so that the loops specialise. The arrays
  * are read through restrict pointers and the sums kept in locals. Returns 1 if the
  * renormalisation fell back to the identity. */
 static inline __attribute__((always_inline)) int gradients_of(struct pass_ctx *ctx, long i,
@@ -33,6 +34,7 @@ static inline __attribute__((always_inline)) int gradients_of(struct pass_ctx *c
   const double support2 = ctx->prm->kern.support2, rhoi = rho[i], *restrict rho_state = p->rho;
   const int weighted = multi && ctx->c->interface_pressure == IFACE_P_DENSITY_WEIGHTED;
   double *restrict div_own = ctx->w->div_own;   /* NULL unless the own-phase damper is on */
+  const int own = multi == 2;                    /* then div_own is summed */
   double xi[3], vi[3], mt[9] = {0}, g[3] = {0}, sum_gw[3] = {0}, div = 0, div_ph = 0, out[3];
   for (int d = 0; d < dim; d++) {
     xi[d] = x[d][i];
@@ -53,7 +55,7 @@ static inline __attribute__((always_inline)) int gradients_of(struct pass_ctx *c
       div += fv * dvdx * 2.0 * rho_state[j] / (rho_state[i] + rho_state[j]);
     else
       div += fv * dvdx;
-    if (div_own && (phase[j] == ph || part_has(phase[j], KIND_BOUNDARY))) div_ph += fv * dvdx;
+    if (own && (phase[j] == ph || part_has(phase[j], KIND_BOUNDARY))) div_ph += fv * dvdx;
     n_nb++;
     if (shift)
       for (int d = 0; d < dim; d++) sum_gw[d] += fv * dx[d];
@@ -72,7 +74,7 @@ static inline __attribute__((always_inline)) int gradients_of(struct pass_ctx *c
     for (int d = 0; d < dim; d++) ctx->w->grad_rho[d][i] = fallback ? g[d] : out[d];
   }
   ctx->w->div[i] = div;
-  if (div_own) div_own[i] = div_ph;
+  if (own) div_own[i] = div_ph;
   if (shift) shifting_velocity(ctx, i, sum_gw, n_nb);
   return fallback;
 }
@@ -96,17 +98,17 @@ static void clear_ghost(struct pass_ctx *ctx, long i, const struct neighbours *n
 #define GRADIENTS_OF(D, S, M) \
   (renorm ? gradients_of(ctx, i, nb, pairs, D, S, M, 1) : gradients_of(ctx, i, nb, pairs, D, S, M, 0))
 #ifdef MPSPH_SINGLE_PHASE   /* benchmark build: the multiphase specialisations compiled out */
-#define PHASED(D, S) GRADIENTS_OF(D, S, 0)
+#define PHASED(D, S) (own ? GRADIENTS_OF(D, S, 2) : GRADIENTS_OF(D, S, 0))
 #else
-#define PHASED(D, S) (multi ? GRADIENTS_OF(D, S, 1) : GRADIENTS_OF(D, S, 0))
+#define PHASED(D, S) (own ? GRADIENTS_OF(D, S, 2) : multi ? GRADIENTS_OF(D, S, 1) : GRADIENTS_OF(D, S, 0))
 #endif
 
-/* The specialisation of gradients_of for the dimension, shifting, the number of phases and the
- * density gradient. */
+/* The specialisation of gradients_of for the dimension, shifting, the number of phases, the
+ * own-phase damper and the density gradient. */
 static void gradients(struct pass_ctx *ctx, long i, const struct neighbours *nb) {
   long *pairs = &ctx->out.pairs;
   int shift = (ctx->prm->features & FEAT_SHIFT) != 0, multi = ctx->c->n_phases > 1, fallback;
-  const int renorm = (ctx->prm->features & FEAT_DIFFUSION) != 0;
+  const int renorm = (ctx->prm->features & FEAT_DIFFUSION) != 0, own = ctx->w->div_own != NULL;
   (void)multi;
   if (ctx->p->dim == 2) fallback = shift ? PHASED(2, 1) : PHASED(2, 0);
   else fallback = shift ? PHASED(3, 1) : PHASED(3, 0);
