@@ -37,23 +37,78 @@ long visit_near(const struct pass_ctx *ctx, const double *xs, int with_walls, ne
   return n;
 }
 
-/* visit_near without walls, over the candidates of xs's stencil whose bits are set in the
- * list at point (nlist_point_add: a header word, then the kept words of the mask): the same
- * calls in the same order. */
+/* The candidates of a mirror point's list (nlist_point_add: a header word, then the kept words
+ * of a mask over the stencil of the point's cell), in stencil order. */
+struct listed {
+  const uint64_t *point;      /* the list */
+  int words, first, w, k;     /* kept words, the first one's number, the word and range now */
+  long range_first;           /* candidate number of the first slot of range k */
+  uint64_t bits;              /* the bits of word w not yet visited */
+  struct neighbour_ranges r;  /* the stencil ranges, read only when a bit is set */
+};
+
+/* Start walking the list at point, of mirror point xs. */
+static inline void listed_start(struct listed *it, const struct pass_ctx *ctx, const double *xs,
+                                const uint64_t *point) {
+  it->point = point;
+  it->words = nlist_point_words(point, &it->first);
+  it->w = it->k = 0;
+  it->range_first = 0;
+  it->bits = it->words ? point[1] : 0;
+  if (it->words) ranges_at(ctx, xs, &it->r);
+}
+
+/* The next listed candidate's slot into *j; 0 when none is left. */
+static inline int listed_next(struct listed *it, long *j) {
+  while (!it->bits) {
+    if (++it->w >= it->words) return 0;
+    it->bits = it->point[1 + it->w];
+  }
+  long b = 64L * (it->first + it->w) + __builtin_ctzll(it->bits);
+  it->bits &= it->bits - 1;
+  while (b >= it->range_first + it->r.count[it->k]) it->range_first += it->r.count[it->k++];
+  *j = it->r.start[it->k] + (b - it->range_first);
+  return 1;
+}
+
+/* visit_near without walls, over the listed candidates of xs: the same calls in the same order. */
 static long visit_listed(const struct pass_ctx *ctx, const double *xs, const uint64_t *point, near_fn fn,
                          void *arg) {
-  int first;
-  const int words = nlist_point_words(point, &first);
-  struct neighbour_ranges r;
-  long n = 0, range_first = 0;   /* candidate number of the first slot of range k */
-  int k = 0;
-  if (words) ranges_at(ctx, xs, &r);
-  for (int w = 0; w < words; w++)
-    for (uint64_t bits = point[1 + w]; bits; bits &= bits - 1) {
-      long b = 64L * (first + w) + __builtin_ctzll(bits);
-      while (b >= range_first + r.count[k]) range_first += r.count[k++];
-      n += visit_if_near(ctx, xs, r.start[k] + (b - range_first), fn, arg);
-    }
+  struct listed it;
+  long n = 0;
+  listed_start(&it, ctx, xs, point);
+  for (long j; listed_next(&it, &j);) n += visit_if_near(ctx, xs, j, fn, arg);
+  return n;
+}
+
+/* The Shepard sums a of one phase over the listed candidates of xs, inlined with a literal dim:
+ * the sums of visit_listed with add_shepard, in the same order, kept in locals. */
+static inline __attribute__((always_inline)) long listed_one_phase_dim(const struct pass_ctx *ctx,
+                                                                       const double *xs,
+                                                                       const uint64_t *point, double *a,
+                                                                       const int dim) {
+  const struct parts *p = ctx->p;
+  const double *x[3] = {p->x[0], p->x[1], p->x[2]}, *v[3] = {p->v[0], p->v[1], p->v[2]};
+  const double support2 = ctx->prm->kern.support2;
+  double sum_w = 0, sum_p = 0, sum_rho = 0, sum_u[3] = {0, 0, 0};
+  struct listed it;
+  long n = 0;
+  listed_start(&it, ctx, xs, point);
+  for (long j; listed_next(&it, &j);) {
+    double r2 = 0;
+    for (int d = 0; d < dim; d++) r2 += (xs[d] - x[d][j]) * (xs[d] - x[d][j]);
+    if (r2 >= support2) continue;
+    double wv = kernel_w(&ctx->prm->kern, r2) * p->m[j] / p->rho[j];
+    sum_w += wv;
+    sum_p += wv * p->p[j];
+    sum_rho += wv * p->rho[j];
+    for (int d = 0; d < dim; d++) sum_u[d] += wv * v[d][j];
+    n++;
+  }
+  a[SHEPARD_W] = sum_w;
+  a[SHEPARD_P] = sum_p;
+  a[SHEPARD_RHO] = sum_rho;
+  for (int d = 0; d < dim; d++) a[SHEPARD_U + d] = sum_u[d];
   return n;
 }
 
@@ -80,6 +135,15 @@ static void shepard_clear(const struct pass_ctx *ctx, struct shepard *s) {
   memset(s, 0, sizeof(*s));
   s->with_rho_r = ctx->c->interface_pressure == IFACE_P_DENSITY_WEIGHTED && ctx->c->n_phases > 1;
   s->one_phase = ctx->c->n_phases == 1;
+}
+
+/* The Shepard sums s (cleared) at ghost k's mirror point xs from its list: with one phase by the
+ * specialised loop, else through visit_listed. */
+static long shepard_listed(const struct pass_ctx *ctx, const double *xs, const uint64_t *point,
+                           struct shepard *s) {
+  if (!s->one_phase) return visit_listed(ctx, xs, point, add_shepard, s);
+  if (ctx->p->dim == 3) return listed_one_phase_dim(ctx, xs, point, s->phase[0], 3);
+  return listed_one_phase_dim(ctx, xs, point, s->phase[0], 2);
 }
 
 void shepard_at(const struct pass_ctx *ctx, const double *xs, struct shepard *s, long *pairs) {
@@ -186,7 +250,7 @@ void pass_wall_ghosts(struct pass_ctx *ctx) {
     wall_mirror_point(ctx, k, xs);
     if (listed_ghost(ctx, k)) {
       shepard_clear(ctx, &s);
-      pairs += visit_listed(ctx, xs, point, add_shepard, &s);
+      pairs += shepard_listed(ctx, xs, point, &s);
       point = nlist_point_next(point);
     } else {
       shepard_at(ctx, xs, &s, &pairs);
