@@ -250,24 +250,47 @@ void space_index(struct space *s, const struct parts *p) {
   }
 }
 
-void neighbour_ranges(const struct space *s, long c, struct neighbour_ranges *r) {
+/* The squared distance [m^2] from coordinate x to the cells of axis d at indices i - 1, i, i + 1,
+ * into gap2[0..2]. */
+static void axis_gaps(const struct grid *g, int d, long i, double x, double *gap2) {
+  for (int k = 0; k < 3; k++) {
+    double lo = g->min[d] + (double)(i - 1 + k) * g->edge[d], hi = lo + g->edge[d];
+    double gap = x < lo ? lo - x : (x > hi ? x - hi : 0.0);
+    gap2[k] = gap * gap;
+  }
+}
+
+/* The particle ranges of the cells around c present on this rank; with x, only those whose box
+ * lies within squared distance cull2 of x. */
+static void ranges_around(const struct space *s, long c, const double *x, double cull2,
+                          struct neighbour_ranges *r) {
   const long *n = s->grid.n;
   long ix = c % n[0], iy = (c / n[0]) % n[1], iz = c / (n[0] * n[1]);
   long lz = s->grid.dim == 3 ? 1 : 0;
+  double gap2[3][3] = {{0}};
+  for (int d = 0; x && d < s->grid.dim; d++) axis_gaps(&s->grid, d, d == 0 ? ix : d == 1 ? iy : iz, x[d], gap2[d]);
   r->n = 0;
   for (long z = iz - lz; z <= iz + lz; z++) {
     if (z < 0 || z >= n[2]) continue;
     for (long y = iy - 1; y <= iy + 1; y++) {
       if (y < 0 || y >= n[1]) continue;
-      for (long x = ix - 1; x <= ix + 1; x++) {
-        if (x < 0 || x >= n[0]) continue;
-        long l = space_local_xyz(s, x, y, z);
+      for (long xi = ix - 1; xi <= ix + 1; xi++) {
+        if (xi < 0 || xi >= n[0]) continue;
+        if (x && gap2[0][xi - ix + 1] + gap2[1][y - iy + 1] + gap2[2][z - iz + 1] > cull2) continue;
+        long l = space_local_xyz(s, xi, y, z);
         if (l < 0 || !s->cell_count[l]) continue;
         r->start[r->n] = s->cell_start[l];
         r->count[r->n++] = s->cell_count[l];
       }
     }
   }
+}
+
+void neighbour_ranges(const struct space *s, long c, struct neighbour_ranges *r) { ranges_around(s, c, NULL, 0, r); }
+
+void neighbour_ranges_within(const struct space *s, long c, const double *x, double radius,
+                             struct neighbour_ranges *r) {
+  ranges_around(s, c, x, radius * radius * (1 + RANGE_CULL_MARGIN), r);
 }
 
 void space_keep_own(const struct space *s, struct parts *p) {

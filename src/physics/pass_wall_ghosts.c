@@ -25,6 +25,13 @@ static void ranges_at(const struct pass_ctx *ctx, const double *xs, struct neigh
   neighbour_ranges(ctx->space, grid_cell_clamped(&ctx->space->grid, xs), r);
 }
 
+/* The ranges of a fixed mirror point's list: the stencil of xs's cell without the cells farther
+ * than the list radius, the same at the list's build and at every stage of the step (the cells
+ * do not change within it). */
+static void list_ranges_at(const struct pass_ctx *ctx, const double *xs, struct neighbour_ranges *r) {
+  neighbour_ranges_within(ctx->space, grid_cell_clamped(&ctx->space->grid, xs), xs, ctx->prm->list_radius, r);
+}
+
 long visit_near(const struct pass_ctx *ctx, const double *xs, int with_walls, near_fn fn, void *arg) {
   struct neighbour_ranges r;
   long n = 0;
@@ -55,7 +62,7 @@ static inline void listed_start(struct listed *it, const struct pass_ctx *ctx, c
   it->w = it->k = 0;
   it->range_first = 0;
   it->bits = it->words ? point[1] : 0;
-  if (it->words) ranges_at(ctx, xs, &it->r);
+  if (it->words) list_ranges_at(ctx, xs, &it->r);
 }
 
 /* The next listed candidate's slot into *j; 0 when none is left. */
@@ -234,7 +241,7 @@ void pass_wall_ghost_lists(struct pass_ctx *ctx) {
     double xs[3];
     struct neighbour_ranges r;
     wall_mirror_point(ctx, k, xs);
-    ranges_at(ctx, xs, &r);
+    list_ranges_at(ctx, xs, &r);
     nlist_point_add(ctx->nl, ctx->p, xs, &r);
   }
 }
