@@ -5,9 +5,10 @@ median <= max, and each metric has the sign and range its definition allows; par
 per core is in a plausible range, agrees with the same run's main-pass figures, and no pass runs
 above the measured peak; every benchmark of the suite (scenes x ranks, weak scaling, each
 optional term, the single-phase build, the HDF5 sizes, the 3D weak-scaling rank counts, the 3D
-step's sizes against their 2D slices) has its rows in the CSV and in the report, whose sections and target verdicts are all there; the peer comparison (DualSPHysics) is
-either marked skipped with no rows, or has its time ratios on 1 and 2 cores (the report's table
-holding the CSV's medians) and both codes' front errors. Prints each problem and exits 1 if
+step's sizes against their 2D slices) has its rows in the CSV and in the report, whose sections
+and target verdicts are all there; the peer comparison (DualSPHysics) is either marked skipped
+with no rows, or has its time ratios on 1 and 2 cores (the report's table holding the CSV's
+medians) and both codes' front errors. Prints each problem and exits 1 if
 there is one.
 
 Usage: check_bench.py OUT [--quick] [--sizes N]   (the options bench.py ran with)"""

@@ -99,10 +99,6 @@ struct grid space_top_grid(const struct grid *g, long b);
 /** The particle ranges of the 3^dim cells around cell c (those present on this rank). */
 void neighbour_ranges(const struct space *s, long c, struct neighbour_ranges *r);
 
-/** Relative margin on the squared radius of neighbour_ranges_within: far above the rounding of a
- *  cell's bounds and of the cell assignment, so no particle within the radius is left out. */
-#define RANGE_CULL_MARGIN 1e-9
-
 /** neighbour_ranges without the cells whose box lies farther than radius [m] from point x [m],
  *  in the same order: the candidates within radius of x of the particles in their cells' boxes
  *  (cells assigned at the current positions) are all kept. */

@@ -250,6 +250,10 @@ void space_index(struct space *s, const struct parts *p) {
   }
 }
 
+/* Relative margin on the squared radius of neighbour_ranges_within: far above the rounding of a
+ * cell's bounds and of the cell assignment, so no particle within the radius is left out. */
+#define RANGE_CULL_MARGIN 1e-9
+
 /* The squared distance [m^2] from coordinate x to the cells of axis d at indices i - 1, i, i + 1,
  * into gap2[0..2]. */
 static void axis_gaps(const struct grid *g, int d, long i, double x, double *gap2) {
@@ -265,10 +269,10 @@ static void axis_gaps(const struct grid *g, int d, long i, double x, double *gap
 static void ranges_around(const struct space *s, long c, const double *x, double cull2,
                           struct neighbour_ranges *r) {
   const long *n = s->grid.n;
-  long ix = c % n[0], iy = (c / n[0]) % n[1], iz = c / (n[0] * n[1]);
+  const long i[3] = {c % n[0], (c / n[0]) % n[1], c / (n[0] * n[1])}, ix = i[0], iy = i[1], iz = i[2];
   long lz = s->grid.dim == 3 ? 1 : 0;
   double gap2[3][3] = {{0}};
-  for (int d = 0; x && d < s->grid.dim; d++) axis_gaps(&s->grid, d, d == 0 ? ix : d == 1 ? iy : iz, x[d], gap2[d]);
+  for (int d = 0; x && d < s->grid.dim; d++) axis_gaps(&s->grid, d, i[d], x[d], gap2[d]);
   r->n = 0;
   for (long z = iz - lz; z <= iz + lz; z++) {
     if (z < 0 || z >= n[2]) continue;

@@ -10,14 +10,33 @@
 #include <string.h>
 #include "physics/passes.h"
 
-/* Call fn for candidate j if it lies within the kernel support of xs; 1 if it did. */
-static inline int visit_if_near(const struct pass_ctx *ctx, const double *xs, long j, near_fn fn, void *arg) {
+/* Whether candidate j lies within the kernel support of xs (the squared distance summed over
+ * `dim` axes, a literal where it is inlined), and its weight W V_j into *wv if it does. */
+static inline __attribute__((always_inline)) int near_weight(const struct pass_ctx *ctx, const double *xs, long j,
+                                                             const int dim, double *wv) {
   const struct parts *p = ctx->p;
   double r2 = 0;
-  for (int d = 0; d < p->dim; d++) r2 += (xs[d] - p->x[d][j]) * (xs[d] - p->x[d][j]);
+  for (int d = 0; d < dim; d++) r2 += (xs[d] - p->x[d][j]) * (xs[d] - p->x[d][j]);
   if (r2 >= ctx->prm->kern.support2) return 0;
-  fn(arg, ctx, j, kernel_w(&ctx->prm->kern, r2) * p->m[j] / p->rho[j]);
+  *wv = kernel_w(&ctx->prm->kern, r2) * p->m[j] / p->rho[j];
   return 1;
+}
+
+/* Call fn for candidate j if it lies within the kernel support of xs; 1 if it did. */
+static inline int visit_if_near(const struct pass_ctx *ctx, const double *xs, long j, near_fn fn, void *arg) {
+  double wv;
+  if (!near_weight(ctx, xs, j, ctx->p->dim, &wv)) return 0;
+  fn(arg, ctx, j, wv);
+  return 1;
+}
+
+/* Add weight wv times slot j's values to the sums a, over `dim` velocity components. */
+static inline __attribute__((always_inline)) void add_values(double *a, const struct parts *p, long j, double wv,
+                                                             const int dim) {
+  a[SHEPARD_W] += wv;
+  a[SHEPARD_P] += wv * p->p[j];
+  a[SHEPARD_RHO] += wv * p->rho[j];
+  for (int d = 0; d < dim; d++) a[SHEPARD_U + d] += wv * p->v[d][j];
 }
 
 /* The stencil ranges of the cell holding point xs. */
@@ -88,43 +107,23 @@ static long visit_listed(const struct pass_ctx *ctx, const double *xs, const uin
   return n;
 }
 
-/* The Shepard sums a of one phase over the listed candidates of xs, inlined with a literal dim:
- * the sums of visit_listed with add_shepard, in the same order, kept in locals. */
+/* The Shepard sums a (zero) of one phase over the listed candidates of xs, inlined with a literal
+ * dim: the sums of visit_listed with add_shepard, in the same order, kept in a local copy. */
 static inline __attribute__((always_inline)) long listed_one_phase_dim(const struct pass_ctx *ctx,
                                                                        const double *xs,
                                                                        const uint64_t *point, double *a,
                                                                        const int dim) {
-  const struct parts *p = ctx->p;
-  const double *x[3] = {p->x[0], p->x[1], p->x[2]}, *v[3] = {p->v[0], p->v[1], p->v[2]};
-  const double support2 = ctx->prm->kern.support2;
-  double sum_w = 0, sum_p = 0, sum_rho = 0, sum_u[3] = {0, 0, 0};
+  double sums[SHEPARD_U + 3] = {0}, wv;
   struct listed it;
   long n = 0;
   listed_start(&it, ctx, xs, point);
-  for (long j; listed_next(&it, &j);) {
-    double r2 = 0;
-    for (int d = 0; d < dim; d++) r2 += (xs[d] - x[d][j]) * (xs[d] - x[d][j]);
-    if (r2 >= support2) continue;
-    double wv = kernel_w(&ctx->prm->kern, r2) * p->m[j] / p->rho[j];
-    sum_w += wv;
-    sum_p += wv * p->p[j];
-    sum_rho += wv * p->rho[j];
-    for (int d = 0; d < dim; d++) sum_u[d] += wv * v[d][j];
-    n++;
-  }
-  a[SHEPARD_W] = sum_w;
-  a[SHEPARD_P] = sum_p;
-  a[SHEPARD_RHO] = sum_rho;
-  for (int d = 0; d < dim; d++) a[SHEPARD_U + d] = sum_u[d];
+  for (long j; listed_next(&it, &j);)
+    if (near_weight(ctx, xs, j, dim, &wv)) {
+      add_values(sums, ctx->p, j, wv, dim);
+      n++;
+    }
+  memcpy(a, sums, sizeof sums);
   return n;
-}
-
-/* Add weight wv times slot j's values to the sums a. */
-static void add_values(double *a, const struct parts *p, long j, double wv) {
-  a[SHEPARD_W] += wv;
-  a[SHEPARD_P] += wv * p->p[j];
-  a[SHEPARD_RHO] += wv * p->rho[j];
-  for (int d = 0; d < p->dim; d++) a[SHEPARD_U + d] += wv * p->v[d][j];
 }
 
 /* Add fluid slot j with weight wv to the Shepard sums arg: all phases and its own. */
@@ -132,8 +131,8 @@ static void add_shepard(void *arg, const struct pass_ctx *ctx, long j, double wv
   struct shepard *s = arg;
   const struct parts *p = ctx->p;
   double *own = s->phase[p->phase[j]];
-  if (!s->one_phase) add_values(s->all, p, j, wv);
-  add_values(own, p, j, wv);
+  if (!s->one_phase) add_values(s->all, p, j, wv, p->dim);
+  add_values(own, p, j, wv, p->dim);
   for (int d = 0; s->with_rho_r && d < p->dim; d++) own[SHEPARD_RHO_R + d] += wv * p->rho[j] * p->x[d][j];
 }
 
