@@ -208,8 +208,11 @@ int engine_check_energy(struct engine *e);
  *  Returns 0 or 2 (a particle left the domain or jumped beyond the neighbouring ranks). */
 int engine_rebuild(struct engine *e);
 
-/** Re-partition the cells with METIS from the current particle weights and redistribute. */
-int engine_repartition(struct engine *e);
+/** Re-partition the cells with METIS from the current particle weights and redistribute.
+ *  Returns 0, or 1 when the partition fails (a rank would get no cell, METIS failed) with a
+ *  message on rank 0; when `optional` (a re-partition for balance) such a failure only warns,
+ *  keeps the current partition and returns 0. Collective. */
+int engine_repartition(struct engine *e, int optional);
 
 /** Rank 0 prints the start-up line: the global particle counts, the cell grid, the halo depth,
  *  the ranks and the top cells' block size. */

@@ -106,28 +106,38 @@ static void build_halo(struct engine *e) {
   free(reads);
 }
 
-int engine_adopt_partition(struct engine *e, const int64_t *weight, int keep) {
+/* Partition the top cells by weight and adopt the result (engine_adopt_partition). When the
+ * partition fails and `optional` (a re-partition for balance), rank 0 warns and the current
+ * partition, valid as it is, stays. Returns 0 or 1 (failed). Collective. */
+static int adopt_partition(struct engine *e, const int64_t *weight, int keep, int optional) {
   char err[512];
   int *owner = mem_calloc(e->space.top.n_cells, sizeof(int), "top cell owners");
   int status = partition_cells(&e->space.top, weight, e->n_ranks, keep ? e->space.top_owner : NULL,
                               e->comm, owner, err, sizeof(err));
-  if (status) report(e, err);
-  else space_set_owner(&e->space, owner);
+  if (!status) space_set_owner(&e->space, owner);
+  else if (!optional) report(e, err);
+  else if (e->rank == 0)
+    fprintf(stderr, "mpsph: warning: the re-partition at step %ld is skipped and the current partition kept: %s\n",
+            e->step, err);
   free(owner);
   return status;
 }
 
-int engine_repartition(struct engine *e) {
+int engine_adopt_partition(struct engine *e, const int64_t *weight, int keep) {
+  return adopt_partition(e, weight, keep, 0);
+}
+
+int engine_repartition(struct engine *e, int optional) {
   double t0 = MPI_Wtime();
   int64_t *w = top_cell_weights(e);
-  int status = engine_adopt_partition(e, w, 1);
+  int status = adopt_partition(e, w, 1, optional);
   free(w);
-  if (status) return 1;
+  e->last_repartition_step = e->step;
+  if (status) return optional ? 0 : 1;
   redistribute_parts(&e->space, &e->p, e->comm);
   build_halo(e);
   resort(e);
   e->n_repartitions++;
-  e->last_repartition_step = e->step;
   e->t_repartition += MPI_Wtime() - t0;
   return 0;
 }
@@ -175,7 +185,7 @@ static double rank_imbalance(const struct engine *e, double local) {
 static int balance(struct engine *e) {
   const struct case_def *c = e->c;
   if (e->n_ranks == 1) return 0;
-  if (c->repartition_every > 0 && e->step % c->repartition_every == 0) return engine_repartition(e);
+  if (c->repartition_every > 0 && e->step % c->repartition_every == 0) return engine_repartition(e, 1);
   if (e->step % BALANCE_CHECK_EVERY) return 0;
   double parts_imb = rank_imbalance(e, rank_work(e)), time_imb = rank_imbalance(e, e->t_compute), t_sum;
   MPI_Allreduce(&e->t_compute, &t_sum, 1, MPI_DOUBLE, MPI_SUM, e->comm);
@@ -185,7 +195,7 @@ static int balance(struct engine *e) {
     if (e->rank == 0)
       printf("re-partition at step %ld: particle imbalance %.1f %%, time imbalance %.1f %%\n",
              e->step, 100 * parts_imb, 100 * time_imb);
-    status = engine_repartition(e);
+    status = engine_repartition(e, 1);
   }
   e->t_compute = 0;
   return status;
@@ -264,7 +274,7 @@ static int distribute_particles(struct engine *e) {
   double n_fluid, n_wall;
   engine_global_counts(e, &n_fluid, &n_wall);
   engine_print_layout(e, n_fluid, n_wall);
-  return engine_repartition(e);
+  return engine_repartition(e, 0);
 }
 
 int engine_init(struct engine *e, const struct case_def *c, const char *outdir,
