@@ -34,6 +34,14 @@ WRITER_SOURCES = ("JPartDataBi4", "JBinaryData", "Functions", "JObject", "JExcep
 REFERENCE = "cases/dambreak-1phase/reference/dambreak_surge_front_martin_moyce1952_table.csv"
 SAMPLE_S = 0.01   # time between the front samples of the accuracy runs [s]
 FRONT_CORES = 2   # the accuracy runs of both codes use the 2 cores
+# mpsph's settings timed against DualSPHysics: (key, what the report calls them, --set overrides
+# of CASE). The issue's settings as the case has them, and the same scheme with less work per
+# simulated second: CFL 2 (half the steps), and with Wendland C2 (support 2.66 dx: about half the
+# pairs) besides. Their validation errors are in the dambreak-front and dambreak-impact studies of
+# doc/validation/README.md.
+MPSPH_SETTINGS = (("mpsph", "Gaussian (cut at 4 dx), CFL 1", ()),
+                  ("mpsph_cfl2", "Gaussian (cut at 4 dx), CFL 2", ("time.cfl=2",)),
+                  ("mpsph_wendland_cfl2", "Wendland C2 (support 2.66 dx), CFL 2", ("kernel=wendland-c2", "time.cfl=2")))
 
 
 def sh(cmd, cwd=ROOT):
@@ -170,11 +178,12 @@ def dsph_steps(log):
     return int(line.split(":")[1].replace(",", "").split()[0])
 
 
-def run_mpsph(ranks, seconds, out, sample_s=None):
-    """One mpsph run of `seconds` of flow; (wall time [s], steps). With sample_s, a snapshot
-    every sample_s, else only the initial and final ones."""
+def run_mpsph(ranks, seconds, out, sample_s=None, sets=()):
+    """One mpsph run of `seconds` of flow with the --set overrides `sets`; (wall time [s], steps).
+    With sample_s, a snapshot every sample_s, else only the initial and final ones."""
     shutil.rmtree(out, ignore_errors=True)
-    cmd = [MPIRUN, "-n", str(ranks), "build/mpsph", "run", CASE, "-o", out, "--set", "time.end=%g" % seconds,
+    cmd = [MPIRUN, "-n", str(ranks), "build/mpsph", "run", CASE, "-o", out] + [a for kv in sets for a in ("--set", kv)] + [
+           "--set", "time.end=%g" % seconds,
            "--set", "output.interval=%g" % (sample_s or 0), "--set", "output.stats_interval=1e9",
            "--set", "output.probes_interval=1e9", "--set", "output.progress_interval=1e9"]
     t0 = time.perf_counter()
@@ -229,14 +238,16 @@ def front_window_s(d, g):
 
 
 def fronts(binary, case, d, work, seconds, timed_s):
-    """Both codes' front errors against Martin & Moyce over `seconds` of flow and over the
-    timed window, from one run each on FRONT_CORES cores."""
+    """The front errors of DualSPHysics and of each of mpsph's settings against Martin & Moyce over
+    `seconds` of flow and over the timed window, from one run each on FRONT_CORES cores."""
     a, g, dx = d["fluid"][0], d["g"], d["dp"]
     ref = os.path.join(ROOT, REFERENCE)
     out = {"seconds": seconds, "timed_s": timed_s, "T_end": seconds * math.sqrt(2 * g / a),
            "T_timed": timed_s * math.sqrt(2 * g / a)}
-    for code, run, series in (("dualsphysics", lambda o: run_dsph(binary, case, o, FRONT_CORES, seconds, SAMPLE_S), dsph_front),
-                              ("mpsph", lambda o: run_mpsph(FRONT_CORES, seconds, o, SAMPLE_S), mpsph_front)):
+    runs = [("dualsphysics", lambda o: run_dsph(binary, case, o, FRONT_CORES, seconds, SAMPLE_S), dsph_front)]
+    runs += [(key, lambda o, sets=sets: run_mpsph(FRONT_CORES, seconds, o, SAMPLE_S, sets), mpsph_front)
+             for key, _, sets in MPSPH_SETTINGS]
+    for code, run, series in runs:
         folder = os.path.join(work, "front_" + code)
         run(folder)
         ts, zs = series(folder, dx, a, g)
@@ -247,20 +258,22 @@ def fronts(binary, case, d, work, seconds, timed_s):
 
 
 def measure(binary, src, work, rounds, seconds, front_seconds, say):
-    """The comparison: `rounds` interleaved rounds (per core count: DualSPHysics, then mpsph) of
+    """The comparison: `rounds` interleaved rounds (per core count: DualSPHysics, then mpsph with
+    each of MPSPH_SETTINGS) of
     `seconds` of flow on 1 and 2 cores, then the fronts over front_seconds (None: the case's
     window, front_window_s). A dict of the results."""
     case, d, k, nf = prepare_case(binary, src, work)
     res = {"binary": os.path.abspath(binary), "fluid": nf, "c0": k["c0"], "seconds": seconds, "rounds": rounds,
-           "times": {}, "def": {key: d[key] for key in ("dp", "fluid", "tank", "cfl", "coefsound")},
+           "times": {}, "settings": [(key, label) for key, label, _ in MPSPH_SETTINGS], "def": {key: d[key] for key in ("dp", "fluid", "tank", "cfl", "coefsound")},
            "parameters": {e.get("key"): e.get("value") for e in d["parameters"] if e.tag == "parameter"}}
     for cores in (1, 2):
-        res["times"][cores] = {"dualsphysics": [], "mpsph": []}
+        res["times"][cores] = {code: [] for code in ["dualsphysics"] + [key for key, _, _ in MPSPH_SETTINGS]}
     for r in range(rounds):
         for cores in (1, 2):
-            say("peer: round %d, %d cores: DualSPHysics, then mpsph" % (r + 1, cores))
+            say("peer: round %d, %d cores: DualSPHysics, then mpsph with each setting" % (r + 1, cores))
             res["times"][cores]["dualsphysics"].append(run_dsph(binary, case, os.path.join(work, "peer_dsph"), cores, seconds))
-            res["times"][cores]["mpsph"].append(run_mpsph(cores, seconds, os.path.join(work, "peer_mpsph")))
+            for key, _, sets in MPSPH_SETTINGS:
+                res["times"][cores][key].append(run_mpsph(cores, seconds, os.path.join(work, "peer_mpsph"), sets=sets))
     window = front_seconds or front_window_s(d, d["g"])
     say("peer: fronts over %g s of flow on %d cores" % (window, FRONT_CORES))
     res["fronts"] = fronts(binary, case, d, work, window, seconds)

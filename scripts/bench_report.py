@@ -36,6 +36,12 @@ def pct(x):
     return "%.2f %%" % (100 * x) if math.isfinite(x) else "none"
 
 
+def peer_case(key):
+    """The case column of the peer comparison's CSV rows for mpsph's setting `key`
+    (bench_peer.MPSPH_SETTINGS): the issue's settings keep the case's name."""
+    return "dambreak-val2d" + ("" if key == "mpsph" else key[len("mpsph"):].replace("_", "-"))
+
+
 def verdict(ok):
     return "**met**" if ok else "**missed**"
 
@@ -635,28 +641,35 @@ class Report:
                "`_Def.xml` (StepAlgorithm %s, Kernel %s, ViscoTreatment %s, Visco %s, DensityDT %s, "
                "DensityDTvalue %s, Shifting %s; cflnumber %g), binary `%s`; and mpsph's case of the same "
                "geometry, spacing and sound speed, `scripts/bench/dambreak-val2d.yaml` (delta-plus, "
-               "shifting none, artificial viscosity 0.02, CFL 1.0, no acoustic damper). Each code runs "
+               "shifting none, artificial viscosity 0.02, no acoustic damper), with three settings "
+               "(`scripts/bench_peer.py` MPSPH_SETTINGS): the issue's (Gaussian kernel cut at 3h = 4 dx, "
+               "CFL 1.0), the same at CFL 2 (half the steps), and Wendland C2 (support 2h = 2.66 dx, about "
+               "half the pairs) at CFL 2; their validation errors are side by side in the dambreak-front "
+               "and dambreak-impact studies of `doc/validation/README.md`. Each code runs "
                "%g s of flow on 1 and 2 cores (DualSPHysics `-ompthreads:N`, mpsph N ranks), writing "
                "only the initial and final state; %d interleaved rounds (per round and core count "
-               "DualSPHysics, then mpsph), wall time of the whole process (start-up included) measured "
-               "by the bench. Ratio = mpsph / DualSPHysics within each round; median [min-max]." % (
+               "DualSPHysics, then mpsph with each setting), wall time of the whole process (start-up "
+               "included) measured by the bench. Ratio = mpsph / DualSPHysics within each round; "
+               "median [min-max]." % (
                    d["fluid"][0], d["fluid"][1], d["tank"][0], d["tank"][1], d["dp"], p["fluid"], d["coefsound"], p["c0"],
                    prm.get("StepAlgorithm"), prm.get("Kernel"), prm.get("ViscoTreatment"), prm.get("Visco"),
                    prm.get("DensityDT"), prm.get("DensityDTvalue"), prm.get("Shifting"), d["cfl"], p["binary"],
                    p["seconds"], p["rounds"]), "",
-               "| cores | DualSPHysics s | its steps | mpsph s | its steps (RK4) | mpsph / DualSPHysics time |",
-               "|---|---|---|---|---|---|")
+               "| cores | mpsph setting | DualSPHysics s | its steps | mpsph s | its steps (RK4) | mpsph / DualSPHysics time |",
+               "|---|---|---|---|---|---|---|")
         for cores, t in sorted(p["times"].items()):
-            ratio = [m[0] / q[0] for m, q in zip(t["mpsph"], t["dualsphysics"])]
-            steps = {code: med([x[1] for x in t[code]]) for code in t}
-            self.w("| %d core%s | %s | %d | %s | %d | %s |" % (
-                cores, "s" if cores > 1 else "", mmm([x[0] for x in t["dualsphysics"]], "%.2f"), steps["dualsphysics"],
-                mmm([x[0] for x in t["mpsph"]], "%.2f"), steps["mpsph"], mmm(ratio, "%.3f")))
-            for metric, values in (("mpsph_over_dualsphysics_time", ratio),
-                                   ("dualsphysics_seconds", [x[0] for x in t["dualsphysics"]]),
-                                   ("mpsph_seconds", [x[0] for x in t["mpsph"]])):
-                self.row("peer", "dambreak-val2d", p["fluid"], cores, steps["mpsph"], metric, values,
-                         "ratio" if metric.endswith("time") else "s")
+            dsph = [x[0] for x in t["dualsphysics"]]
+            dsph_steps = med([x[1] for x in t["dualsphysics"]])
+            for key, label in p["settings"]:
+                ratio = [m[0] / q for m, q in zip(t[key], dsph)]
+                steps = med([x[1] for x in t[key]])
+                self.w("| %d core%s | %s | %s | %d | %s | %d | %s |" % (
+                    cores, "s" if cores > 1 else "", label, mmm(dsph, "%.2f"), dsph_steps,
+                    mmm([x[0] for x in t[key]], "%.2f"), steps, mmm(ratio, "%.3f")))
+                for metric, values in (("mpsph_over_dualsphysics_time", ratio), ("dualsphysics_seconds", dsph),
+                                       ("mpsph_seconds", [x[0] for x in t[key]])):
+                    self.row("peer", peer_case(key), p["fluid"], cores, steps, metric, values,
+                             "ratio" if metric.endswith("time") else "s")
         self.peer_fronts(p)
 
     def peer_fronts(self, p):
@@ -674,12 +687,14 @@ class Report:
                    else " (shortened: not the case's whole window)"), "",
                "| code | front error, t <= %g s | points | front error, t <= %g s | points |" % (f["timed_s"], f["seconds"]),
                "|---|---|---|---|---|")
-        for code, label in (("dualsphysics", "DualSPHysics"), ("mpsph", "mpsph")):
-            e = f[code]
+        codes = [("dualsphysics", "DualSPHysics", "dualsphysics")]
+        codes += [(key, "mpsph, " + label, key) for key, label in p["settings"]]
+        for key, label, code in codes:
+            e = f[key]
             self.w("| %s | %s | %s | %s | %s |" % (label, pct(e["timed"][0]), e["timed"][1], pct(e["window"][0]), e["window"][1]))
             for metric, err in (("front_error_timed_window_" + code, e["timed"][0]), ("front_error_window_" + code, e["window"][0])):
                 if math.isfinite(err):
-                    self.row("peer", "dambreak-val2d", p["fluid"], 2, 0, metric, [err], "fraction")
+                    self.row("peer", peer_case(key), p["fluid"], 2, 0, metric, [err], "fraction")
         self.w("")
 
     def write(self, out):

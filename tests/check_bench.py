@@ -160,18 +160,19 @@ def throughput_problems(r, rows, md):
 
 
 def peer_problems(md, rows):
-    """The peer comparison: skipped with no rows, or per core count (1, 2) one time-ratio row
-    whose median the report's table shows, and a front-error row of each code."""
+    """The peer comparison: skipped with no rows, or per core count (1, 2) a time-ratio row for
+    each of mpsph's settings whose medians the report's table shows in the same order, and a
+    front-error row of each code."""
     peer = [r for r in rows if r["group"] == "peer"]
     if PEER_SKIPPED in md:
         return ["performance.csv: %d peer rows, but the report says the comparison was skipped" % len(peer)] if peer else []
     out = []
     for cores in (1, 2):
-        ratio = [r for r in peer if r["metric"] == "mpsph_over_dualsphysics_time" and int(r["ranks"]) == cores]
-        m = re.search(r"^\| %d cores? \| [^|]+ \| \d+ \| [^|]+ \| \d+ \| (\S+) \[[^]]*\] \|$" % cores, md, re.M)
-        if len(ratio) != 1 or not m or abs(float(m.group(1)) / float(ratio[0]["median"]) - 1) > 5e-3:
-            out.append("peer comparison on %d cores: %d ratio rows, report row %s" % (
-                cores, len(ratio), m.group(1) if m else "missing"))
+        ratio = [float(r["median"]) for r in peer if r["metric"] == "mpsph_over_dualsphysics_time" and int(r["ranks"]) == cores]
+        shown = [float(x) for x in re.findall(
+            r"^\| %d cores? \| [^|]+ \| [^|]+ \| \d+ \| [^|]+ \| \d+ \| (\S+) \[[^]]*\] \|$" % cores, md, re.M)]
+        if not ratio or len(shown) != len(ratio) or any(abs(a / b - 1) > 5e-3 for a, b in zip(shown, ratio)):
+            out.append("peer comparison on %d cores: ratio rows %s, report rows %s" % (cores, ratio, shown))
     for code in ("dualsphysics", "mpsph"):
         if not any(r["metric"] == "front_error_window_" + code for r in peer):
             out.append("performance.csv: no front error of %s in the peer comparison" % code)

@@ -44,6 +44,7 @@ def impact_study(study_id, case, title, rungs):
 
 
 IMPACT_RUN = {"time.end": 0.8, "output.interval": 0}
+FRONT_RUN = {"fluids.0.box.max": "[0.3, 0.6]", "time.end": 0.4, "output.interval": 0.01}
 POSITION_ONLY = "delta-plus, position-only shifting"
 HYDRO_DOMAIN = {"domain.min": "[-0.5,-0.5]", "domain.max": "[1.5,2.5]"}   # room for 4 ghost layers at dx = 0.1
 HYDRO_LONG = "delta-plus, t sqrt(g/Hw) = 40"
@@ -51,6 +52,13 @@ WEIGHTED = {"physics.interface_pressure": "density-weighted"}
 WEIGHTED_LABEL = "delta-plus, density-weighted interface pressure"
 ALPHA_002 = {"physics.artificial_viscosity": 0.02}   # paper 000's sensitivity value of alpha
 ALPHA_002_LABEL = "delta-plus, alpha = 0.02"
+# issue 23: the same scheme with less work per simulated second: CFL 2 (the loader's limit, stable
+# in doc/theory.md's CFL study) halves the steps, and Wendland C2's support 2h = 2.66 dx holds
+# about half the neighbours of the Gaussian cut at 3h = 4 dx
+CFL2 = {"time.cfl": 2}
+CFL2_LABEL = "delta-plus, CFL 2"
+CHEAP = {"kernel": "wendland-c2", "time.cfl": 2}
+CHEAP_LABEL = "delta-plus, Wendland C2, CFL 2"
 DELTA_SPH = {"scheme": "delta-sph", "physics.shifting": "none"}
 # paper 001 runs its hydrostatic tank with p_b = 0.1 p_max (notes section 2.4), p_max = rho_w g Hw
 DELTA_SPH_HYDRO = {**DELTA_SPH, "phases.0.p_background": 981, "phases.1.p_background": 981}
@@ -157,15 +165,17 @@ STUDIES = [
         "metric": functools.partial(metrics.dambreak_front, column_width=0.3,
                                     reference=DATA.format(case="dambreak-1phase",
                                                           file="dambreak_surge_front_martin_moyce1952_table.csv")),
-        "rungs": [rung(dx, n, q, **{"fluids.0.box.max": "[0.3, 0.6]", "time.end": 0.4, "output.interval": 0.01})
-                  for dx, n, q in ((0.02, 1, True), (0.01, 2, True), (0.005, 2, False))],
+        "rungs": [rung(dx, n, q, label=label, **FRONT_RUN, **sets)
+                  for label, sets in (("delta-plus", {}), (CFL2_LABEL, CFL2), (CHEAP_LABEL, CHEAP))
+                  for dx, n, q in ((0.02, 1, True), (0.01, 2, not sets), (0.005, 2, False))],
         "plot": "front",
     },
     impact_study("dambreak-impact", "dambreak-1phase",
                  "Dam break, first impact at the right-wall sensor P1 (Buchner 2002)",
                  [rung(dx, n, q, **IMPACT_RUN) for dx, n, q in ((0.024, 1, True), (0.012, 2, False), (0.006, 2, False))] +
                  # its viscosity alpha h c0 / 8 slows the front less
-                 [rung(dx, n, q, label=ALPHA_002_LABEL, **IMPACT_RUN, **ALPHA_002)
+                 [rung(dx, n, q, label=label, **IMPACT_RUN, **sets)
+                  for label, sets in ((ALPHA_002_LABEL, ALPHA_002), (CFL2_LABEL, CFL2), (CHEAP_LABEL, CHEAP))
                   for dx, n, q in ((0.024, 1, True), (0.012, 2, False), (0.006, 2, False))]),
     impact_study("dambreak-2phase", "dambreak-2phase",
                  "Two-phase dam break, first impact at P1 (Buchner 2002), consistent and position-only shifting",
