@@ -211,3 +211,20 @@ def kleefsman(ax, items):
 def lobovsky(ax, items):
     """The water levels of the 3D two-phase dam break (Lobovsky et al. 2014), h/H against t sqrt(g/H)."""
     _gauge_heights(ax, items, "Lobovsky et al. 2014 (H1-H4)", ("t sqrt(g/H)", "h / H"), 7.15)
+
+
+def forced_sloshing(ax, items):
+    """The gauge elevation of the resonant 3D sloshing with its half-period extrema (dots), against
+    the linear resonant solution's envelope +-r t (black) and its signal (grey)."""
+    for r, c in items:
+        line = ax.plot(c["t"], 1000 * c["eta"], "-", lw=0.8, label=_label(r))[0]
+        ax.plot(c["t_ext"], 1000 * c["ext"], "o", ms=3, color=line.get_color())
+    if items:
+        c = items[-1][1]
+        t = np.linspace(0, c["t"].max(), 600)
+        ax.plot(t, 1000 * c["rate"] * t, "k-", lw=0.6, label="linear envelope")
+        ax.plot(t, -1000 * c["rate"] * t, "k-", lw=0.6)
+        ax.plot(t, 1000 * metrics.forced_sloshing_linear(t, c["rate"], c["omega"]), "-", color="0.6", lw=0.5,
+                label="linear solution")
+    ax.set_xlabel("t [s]")
+    ax.set_ylabel("elevation at the gauge [mm]")

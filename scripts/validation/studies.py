@@ -482,3 +482,25 @@ STUDIES.append({
               for dx, n in ((0.03, 2), (0.015, 8), (0.01, 16), (0.005, 32))],
     "plot": "lobovsky",
 })
+
+# 3D sloshing at resonance, paper 004 section 4.1.1 (notes seeds-003-004 C5): no record of Liu and
+# Lin's experiment is stored, so the reference is the linear resonant envelope (notes, [D])
+SLOSH3D_QUICK = {"time.end": 3.0}   # the linear phase: eta < 0.04 m = h_w / 4
+STUDIES.append({
+    "id": "sloshing-3d-liu-lin",
+    "case": "sloshing-3d-liu-lin",
+    "title": "3D sloshing at the first natural frequency, Liu and Lin set-up (paper 004 section 4.1.1), water only",
+    "length": ("h_w", 0.15),
+    "reference": "linear potential theory of resonant sloshing from rest (notes seeds-003-004 C5): envelope "
+                 "2 L A omega^3 / (g pi^2) cos(pi x_g / L) t = 0.0130 m/s x t at the gauge x_g = 0.02 m",
+    "error": "|r_SPH / r - 1|, r_SPH the slope through the origin of the gauge's half-period extrema of |eta| "
+             "in 0-3 s; threshold 20 % (notes C5 (a))",
+    "threshold": 0.20,
+    "metric": metrics.sloshing_growth,
+    # quick: h_w/dx = 10 to 3 s on 1 rank; the 7 s runs at h_w/dx = 30 and 60 are paper 004's
+    # two coarser resolutions (cases/sloshing-3d-liu-lin/README.md)
+    "rungs": [rung(0.015, 1, True, label="delta-plus, to 3 s", **SLOSH3D_QUICK),
+              rung(0.01, 1, label="delta-plus, to 3 s", **SLOSH3D_QUICK),
+              rung(0.005, 4), rung(0.0025, 16)],
+    "plot": "forced_sloshing",
+})
