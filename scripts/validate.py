@@ -119,10 +119,24 @@ def run_rung(study, r, out, reuse, done=set()):
     return rec
 
 
+def signal_stop(out):
+    """The line of the run's log saying that a stop signal ended it at a checkpoint before its end
+    time (status 0, user guide section 4.4), or None."""
+    path = os.path.join(out, "mpsph.log")
+    if not os.path.exists(path):
+        return None
+    with open(path, errors="replace") as f:
+        return next((line.strip() for line in f if line.startswith("stopped by SIG")), None)
+
+
 def evaluate(study, r, out, rec):
-    """Error, notes and curves of a finished rung (error nan with the reason if it failed)."""
+    """Error, notes and curves of a finished rung (error nan with the reason if it failed or was
+    stopped by a signal before its end)."""
     if rec["status"] != 0:
         return float("nan"), "run exited with status %d (see %s/mpsph.log)" % (rec["status"], out), None
+    stop = signal_stop(out)
+    if stop:
+        return float("nan"), "run not finished: %s" % stop.split(":")[0], None
     try:
         return study["metric"](out, r["dx"])
     except Exception as exc:  # a metric that cannot be computed is reported, not hidden
