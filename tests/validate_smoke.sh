@@ -7,7 +7,8 @@
 # Then --reuse: a finished run is read back (its recorded wall time reported), also when it ran
 # with another launcher, and a run whose recorded case file and overrides are not the study's
 # current ones is run again (the dam-break front's rung, whose overrides hold a value with a
-# space, is read back). And --only with a report in place: only the chosen study's section and
+# space, is read back), and a run a stop signal ended before its end is not taken as finished. And
+# --only with a report in place: only the chosen study's section and
 # rows are replaced.
 set -eu
 cd "$(dirname "$0")/.."
@@ -97,3 +98,18 @@ grep -q "running it again" "$out/reuse.log" || { echo "FAIL: the stale run is no
 again=$(reuse) && [ "$again" = "$wall" ] && ! grep -q "running it again" "$out/reuse.log" ||
   { echo "FAIL: the re-run's record is not read back"; exit 1; }
 echo "reuse: a finished run read back (also with another launcher), a stale one run again (wall $wall s)"
+
+# a run that a stop signal ended at its checkpoint (status 0, the log's "stopped by SIG..." line) is
+# not finished: --reuse reads it back with no error (n.a.), not as a result
+log=$(dirname "$record")/mpsph.log
+echo "stopped by SIGTERM at step 9, t = 0.1 s: the checkpoint is CKPT; continue with the same command and --restart" >> "$log"
+"$PYTHON" scripts/validate.py --coarsest --only oscillating-drop --reuse --runs "$out/runs" --report "$out/report4" \
+  > "$out/stopped.log"
+"$PYTHON" - "$out/report4/results.csv" <<'PY'
+import csv, math, sys
+row = next(csv.DictReader(open(sys.argv[1])))
+assert row["verdict"] == "n.a." and not math.isfinite(float(row["error"])), row
+PY
+grep -q "run not finished: stopped by SIGTERM at step 9" "$out/stopped.log" ||
+  { echo "FAIL: a signal-stopped run is not reported as unfinished"; exit 1; }
+echo "reuse: a run stopped by a signal is reported as not finished"
