@@ -507,26 +507,28 @@ def rt_tip_positions(run, dx, reference):
                         "spike_ref": sp_ref, "bubble_ref": bu_ref}
 
 
-def rt3d_tip_linear(run, dx, t_max=0.5, atwood=0.5, mu=9.765625e-4, rho_h=1.0, k=2 * math.pi, level=2.0,
-                    a0=0.1):
+def rt3d_tip_linear(run, dx, t_max=0.5, k=2 * math.pi, level=2.0, a0=0.1):
     """max over the snapshots at t <= t_max of |dz_SPH / dz_lin - 1| for cases/rayleigh-taylor-3d:
     dz = level - z_tip the spike tip's depth below the mean level, dz_lin = a0 cosh(sigma_nu t) the
     linear prediction from rest (notes seeds-003-004 C9, acceptance (a): a0 = 0.1 m, the two 0.05 m
-    modes at the centre; sigma_nu = rt_linear_rate with nu_bar = 2 mu / (rho_h + rho_l)). z_tip is
-    the lowest heavy particle of the centre column (rt_tips) less dx / 2, the half spacing its volume
-    reaches below its centre (on the initial lattice, the interface to the lattice's rounding)."""
+    modes at the centre; sigma_nu = rt_linear_rate with nu_bar = (mu_h + mu_l) / (rho_h + rho_l),
+    At, mu and rho from the run's config, g = 1). z_tip is the lowest heavy particle of the centre
+    column (rt_tips) less dx / 2, the half spacing its volume reaches below its centre (on the
+    initial lattice, the interface to the lattice's rounding)."""
+    heavy, light = read_config(run)["phases"][:2]
+    rho_h, rho_l = float(heavy["rho0"]), float(light["rho0"])
+    atwood = (rho_h - rho_l) / (rho_h + rho_l)
+    sigma = rt_linear_rate(atwood, 1.0, k, (float(heavy["viscosity"]) + float(light["viscosity"])) / (rho_h + rho_l))
     ser = rt_series(run, dx)
     t, z_tip = ser[:, 0], ser[:, 2] - 0.5 * dx
-    rho_l = rho_h * (1 - atwood) / (1 + atwood)
-    sigma = rt_linear_rate(atwood, 1.0, k, 2 * mu / (rho_h + rho_l))
     dz, lin = level - z_tip, a0 * np.cosh(sigma * t)
     use = t <= t_max + 1e-9
     rel = dz[use] / lin[use] - 1
     worst = int(np.argmax(np.abs(rel)))
     last = int(np.argmax(t))
-    notes = ("sigma_nu %.3f 1/s; worst at t = %.2f s: dz %.4f vs %.4f m; at t = %.2f s dz %.4f m (linear %.4f), "
+    notes = ("At %.2f, sigma_nu %.3f 1/s; worst at t = %.2f s: dz %.4f vs %.4f m; at t = %.2f s dz %.4f m (linear %.4f), "
              "2 x mode amplitude %.4f m; bubble tip %.3f m" % (
-                 sigma, t[use][worst], dz[use][worst], lin[use][worst], t[last], dz[last], lin[last],
+                 atwood, sigma, t[use][worst], dz[use][worst], lin[use][worst], t[last], dz[last], lin[last],
                  2 * ser[last, 1], ser[last, 3]))
     return float(np.max(np.abs(rel))), notes, {"t": t, "dz": dz, "mode": 2 * ser[:, 1], "sigma_nu": sigma,
                                                "a0": a0, "t_max": t_max}
