@@ -313,6 +313,9 @@ static void same_shape(const struct shape *a, const struct shape *b, const char 
   same_vec(a->max, b->max, 3, what);
   same_vec(a->centre, b->centre, 3, what);
   CHECK(a->radius == b->radius, "%s radius", what);
+  CHECK(a->surface == b->surface && a->surface_level == b->surface_level &&
+        a->surface_amplitude == b->surface_amplitude && a->surface_wavelength == b->surface_wavelength,
+        "%s surface", what);
   for (int i = 0; i < a->n_vertices; i++) same_vec(a->vertex[i], b->vertex[i], 2, what);
 }
 
@@ -409,6 +412,17 @@ static void test_round_trip(void) {
                "domain: {min: [0, 0], max: [1, 1]}\nphases: [{name: w, rho0: 1, c0: 1e300}]\n", 0,
                NULL, "case.yaml:4: time.dt_min: got the default 0 computed from the other keys",
                "expected a number > 0: set the key");
+  round_trip("name: rt\ndimension: 3\nresolution: {dx: 0.1}\ntime: {end: 1}\n"
+             "domain: {min: [0, 0, 0], max: [1, 1, 4]}\nphases: [{name: w, rho0: 1, c0: 1}]\n"
+             "fluids: [{phase: w, box: {min: [0, 0, 1.9], max: [1, 1, 4],\n"
+             "          floor: {level: 2, amplitude: 0.05, wavelength: 1}}},\n"
+             "         {phase: w, box: {min: [0, 0, 0], max: [1, 1, 2.1],\n"
+             "          ceiling: {level: 2, amplitude: 0.05, wavelength: 1}}}]\n");
+  expect_error("name: f\ndimension: 3\nresolution: {dx: 0.1}\ntime: {end: 1}\n"
+               "domain: {min: [0, 0, 0], max: [1, 1, 1]}\nphases: [{name: w, rho0: 1, c0: 1}]\n"
+               "walls: [{box: {min: [0, 0, 0], max: [1, 1, 1], floor: {level: 0.5, amplitude: 0.1, "
+               "wavelength: 1}}}]\n", 0, NULL, "case.yaml:7: walls.0.box: got a box with a floor or ceiling in a wall",
+               "expected a plain box");
   expect_error("name: p\ndimension: 3\nresolution: {dx: 0.1}\ntime: {end: 1}\n"
                "domain: {min: [0, 0, 0], max: [1, 1, 1]}\nphases: [{name: w, rho0: 1, c0: 1}]\n"
                "walls: [{polygon: [[0, 0], [1, 0], [0, 1]]}]\n", 0, NULL,

@@ -128,7 +128,29 @@ static void check_polygon_faults(void) {
   CHECK(fault_of(4, closed, &a, &b) == POLYGON_REPEATED_VERTEX && a == 0 && b == 3, "closed ring: %d %d", a, b);
 }
 
+/* A 3D box with a cosine floor (and the box below it with the same ceiling) z = 2 + 0.05 (cos 2 pi x + cos 2 pi y): above it inside, below it
+ * outside, the plain box's faces unchanged; every point in one of the two. */
+static void check_box_floor(void) {
+  struct shape b = {.kind = SHAPE_BOX, .min = {0, 0, 1.8}, .max = {1, 1, 4}, .surface = SURFACE_FLOOR,
+                    .surface_level = 2, .surface_amplitude = 0.05, .surface_wavelength = 1};
+  struct shape c = b;   /* the region below: the same surface as a ceiling */
+  c.surface = SURFACE_CEILING;
+  c.min[2] = 0;
+  c.max[2] = 2.2;
+  double centre_up[3] = {0.5, 0.5, 1.91}, centre_down[3] = {0.5, 0.5, 1.89};
+  double corner_up[3] = {0.01, 0.01, 2.11}, corner_down[3] = {0.01, 0.01, 2.09}, outside[3] = {0.5, 0.5, 4.1};
+  CHECK(shape_contains(&b, 3, centre_up), "above the trough at (0.5, 0.5, 1.9)");
+  CHECK(!shape_contains(&b, 3, centre_down), "below the trough at (0.5, 0.5, 1.9)");
+  CHECK(shape_contains(&b, 3, corner_up), "above the crest near (0, 0, 2.1)");
+  CHECK(!shape_contains(&b, 3, corner_down), "below the crest near (0, 0, 2.1)");
+  CHECK(!shape_contains(&b, 3, outside), "above the box");
+  double pts[5][3] = {{0.5, 0.5, 1.9}, {0.3, 0.7, 1.95}, {0.1, 0.2, 2.05}, {0.5, 0.5, 1.85}, {0, 0, 2.1}};
+  for (int k = 0; k < 5; k++)
+    CHECK(shape_contains(&b, 3, pts[k]) != shape_contains(&c, 3, pts[k]), "floor xor ceiling at point %d", k);
+}
+
 int main(void) {
+  check_box_floor();
   check_polygon_faults();
   check_box_and_polygon();
   check_circle();

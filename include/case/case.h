@@ -45,6 +45,10 @@ enum balance_kind { BALANCE_TIME = 0, BALANCE_WORK };   /* what a re-partition b
 struct shape {
   enum shape_kind kind;
   double min[3], max[3];                 /* box */
+  /* box of a fluid: its lower (SURFACE_FLOOR) or upper (SURFACE_CEILING) face along the last axis
+   * is the cosine surface level + amplitude sum_d cos(2 pi x_d / wavelength), d the other axes */
+  enum surface_kind { SURFACE_NONE = 0, SURFACE_FLOOR, SURFACE_CEILING } surface;
+  double surface_level, surface_amplitude, surface_wavelength;
   double centre[3], radius, inner_radius;   /* circle (inner_radius 0: full disc) */
   int n_vertices;                        /* polygon */
   double vertex[CASE_MAX_VERTICES][2];

@@ -423,22 +423,27 @@ def newton_root(f, z, tol=1e-12, steps=100):
 
 
 def rt_mode_amplitude(s, width=1.0):
-    """Amplitude a of the cos(2 pi x / W) mode of the interface height y0 + a cos(kx) [m]: the
-    light phase's volume projected on the mode, a = (2 / W) sum_light V_i cos(k x_i) (the integral
-    of cos(kx) over the light region below the interface; zero for a flat interface on a lattice
-    of whole columns). Continuous in the positions, so it resolves sub-dx amplitudes."""
+    """Amplitude a of the interface mode y0 + a sum_d cos(2 pi x_d / W) [m] (d over the horizontal
+    axes: x in 2D, x and y in 3D): the light phase's volume projected on the mode,
+    a = (2 / W^(dim-1)) sum_light V_i cos(k x_i,d) averaged over d (the integral of cos(k x_d) over
+    the light region below the interface; zero for a flat interface on a lattice of whole
+    columns). Continuous in the positions, so it resolves sub-dx amplitudes."""
     light = s["phase"] == 1
     vol = s["mass"][light] / s["density"][light]
-    return 2.0 / width * np.sum(vol * np.cos(2 * math.pi * s["position"][light, 0] / width))
+    horiz = s["position"][light, :-1]
+    proj = np.mean(np.cos(2 * math.pi * horiz / width), axis=1)
+    return 2.0 / width ** horiz.shape[1] * np.sum(vol * proj)
 
 
-def rt_tips(s, dx):
-    """Spike tip (lowest heavy particle within 1.5 dx of x = W/2) and bubble tip (highest light
-    particle within 1.5 dx of the side walls) [m]."""
-    x, y, ph = s["position"][:, 0], s["position"][:, 1], s["phase"]
-    spike = y[(ph == 0) & (np.abs(x - 0.5) < 1.5 * dx)].min()
-    bubble = y[(ph == 1) & ((x < 1.5 * dx) | (x > 1 - 1.5 * dx))].max()
-    return spike, bubble
+def rt_tips(s, dx, width=1.0):
+    """Spike tip (lowest heavy particle within 1.5 dx of the centre column, x = W/2 in 2D, (W/2, W/2)
+    in 3D) and bubble tip (highest light particle within 1.5 dx of the side walls in 2D, of the
+    corner columns in 3D) [m]; the last axis is the vertical."""
+    pos, ph = s["position"], s["phase"]
+    horiz, z = pos[:, :-1], pos[:, -1]
+    centre = np.linalg.norm(horiz - 0.5 * width, axis=1) < 1.5 * dx
+    edge = np.all((horiz < 1.5 * dx) | (horiz > width - 1.5 * dx), axis=1)
+    return z[(ph == 0) & centre].min(), z[(ph == 1) & edge].max()
 
 
 def rt_series(run, dx):
@@ -500,6 +505,33 @@ def rt_tip_positions(run, dx, reference):
         sp[-1], sp_ref[use][-1], bu[-1], bu_ref[use][-1], t_ref[use][-1])
     return err, notes, {"t": ser[:, 0], "spike": ser[:, 2], "bubble": ser[:, 3], "t_ref": t_ref,
                         "spike_ref": sp_ref, "bubble_ref": bu_ref}
+
+
+def rt3d_tip_linear(run, dx, t_max=0.5, k=2 * math.pi, level=2.0, a0=0.1):
+    """max over the snapshots at t <= t_max of |dz_SPH / dz_lin - 1| for cases/rayleigh-taylor-3d:
+    dz = level - z_tip the spike tip's depth below the mean level, dz_lin = a0 cosh(sigma_nu t) the
+    linear prediction from rest (notes seeds-003-004 C9, acceptance (a): a0 = 0.1 m, the two 0.05 m
+    modes at the centre; sigma_nu = rt_linear_rate with nu_bar = (mu_h + mu_l) / (rho_h + rho_l),
+    At, mu and rho from the run's config, g = 1). z_tip is the lowest heavy particle of the centre
+    column (rt_tips) less dx / 2, the half spacing its volume reaches below its centre (on the
+    initial lattice, the interface to the lattice's rounding)."""
+    heavy, light = read_config(run)["phases"][:2]
+    rho_h, rho_l = float(heavy["rho0"]), float(light["rho0"])
+    atwood = (rho_h - rho_l) / (rho_h + rho_l)
+    sigma = rt_linear_rate(atwood, 1.0, k, (float(heavy["viscosity"]) + float(light["viscosity"])) / (rho_h + rho_l))
+    ser = rt_series(run, dx)
+    t, z_tip = ser[:, 0], ser[:, 2] - 0.5 * dx
+    dz, lin = level - z_tip, a0 * np.cosh(sigma * t)
+    use = t <= t_max + 1e-9
+    rel = dz[use] / lin[use] - 1
+    worst = int(np.argmax(np.abs(rel)))
+    last = int(np.argmax(t))
+    notes = ("At %.2f, sigma_nu %.3f 1/s; worst at t = %.2f s: dz %.4f vs %.4f m; at t = %.2f s dz %.4f m (linear %.4f), "
+             "2 x mode amplitude %.4f m; bubble tip %.3f m" % (
+                 atwood, sigma, t[use][worst], dz[use][worst], lin[use][worst], t[last], dz[last], lin[last],
+                 2 * ser[last, 1], ser[last, 3]))
+    return float(np.max(np.abs(rel))), notes, {"t": t, "dz": dz, "mode": 2 * ser[:, 1], "sigma_nu": sigma,
+                                               "a0": a0, "t_max": t_max}
 
 
 # --- two-phase standing wave (paper 003 section 4.2) -----------------------------------------

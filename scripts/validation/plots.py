@@ -98,6 +98,23 @@ def rt_tips(ax, items):
     ax.set_ylabel("tip height / W")
 
 
+def rt3d_tip(ax, items):
+    """3D spike-tip depth below the mean level and twice the mode amplitude of each run against its
+    own linear prediction a0 cosh(sigma_nu t) (dashed), with the +-25 % band over the compared
+    window (dotted)."""
+    for r, c in items:
+        line = ax.plot(c["t"], c["dz"], "o-", ms=3, lw=0.8, label=_label(r) + ", tip")[0]
+        ax.plot(c["t"], c["mode"], "x", ms=3, color=line.get_color(), label=_label(r) + ", 2 x mode amplitude")
+        t = np.linspace(0, c["t"].max(), 100)
+        lin = c["a0"] * np.cosh(c["sigma_nu"] * t)
+        ax.plot(t, lin, "--", lw=0.8, color=line.get_color(), label="linear, sigma_nu = %.3f 1/s" % c["sigma_nu"])
+        win = t <= c["t_max"]
+        for f in (0.75, 1.25):
+            ax.plot(t[win], f * lin[win], ":", lw=0.6, color=line.get_color())
+    ax.set_xlabel("t [s]")
+    ax.set_ylabel("depth below z = 2 m [m]")
+
+
 def standing_wave(ax, items):
     """The water's kinetic energy against the linear solution E0 exp(-4 nu k^2 t) sin^2(sigma t)."""
     for r, c in items:

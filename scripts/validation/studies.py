@@ -91,6 +91,18 @@ SPC_CASE_PHASES = {"scheme": SPC, "physics.shifting": "none"}   # paper 003's sc
 DB2_COARSE = {"domain.min": "[-0.3,-0.3]", "domain.max": "[3.516,2.1]"}    # room for 4 ghost layers at dx = 0.048
 RT_RUNGS = [rung(dx, n, q, **{"time.end": 3.0, "output.interval": 0.05}) for dx, n, q in
             ((0.04, 1, True), (0.02, 2, True), (0.01, 2, False))]
+# the 3D case (paper 004's scheme and L/dx0 = 125 in the case file): 4 ghost layers need the wider
+# domain at dx = 0.1; the quick rung to t = 0.6 s, the linear window of acceptance (a)
+RT3D_DOMAIN = {"domain.min": "[-0.45,-0.45,-0.45]", "domain.max": "[1.45,1.45,4.45]"}
+# a second Atwood number, At = 0.2 (rho_l = 2/3; notes C9), for the linear check (a) at another
+# sigma_nu; the notes' monotonicity (b) is at t = 4 s, on the finer rungs only
+RT3D_AT02 = {"phases.1.rho0": 0.666666666667}
+RT3D_RUNGS = [rung(0.1, 1, True, label="generalized-dissipation", **RT3D_DOMAIN, **{"time.end": 0.6}),
+              rung(0.1, 1, True, label="generalized-dissipation, At = 0.2", **RT3D_DOMAIN, **RT3D_AT02,
+                   **{"time.end": 0.6}),
+              rung(0.05, 2, label="generalized-dissipation", **{"time.end": 1.0}),
+              rung(0.02, 2, label="generalized-dissipation", **{"time.end": 4.0}),
+              rung(0.008, 2, label="generalized-dissipation", **{"time.end": 4.0})]
 RT_LINEAR_RUNGS = [rung(dx, n, q) for dx, n, q in
                    ((0.04, 1, True), (0.02, 2, True), (0.01, 2, True), (0.005, 2, False))]
 
@@ -239,6 +251,19 @@ STUDIES = [
         "runs": "rayleigh-taylor",
         "rungs": RT_RUNGS,
         "plot": "rt_tips",
+    },
+    {
+        "id": "rayleigh-taylor-3d",
+        "case": "rayleigh-taylor-3d",
+        "title": "3D Rayleigh-Taylor instability, spike tip in the linear phase (paper 004 section 4.3, At = 0.5, Re = 1024)",
+        "length": ("L", 1.0),
+        "reference": "linear theory, 0.1 cosh(sigma_nu t), sigma_nu = 1.716 1/s, At = 0.2: 1.076 1/s (notes seeds-003-004 C9; "
+                     "metrics.rt3d_tip_linear); Lee and Kim 2013's tip curves are not digitised",
+        "error": "max |dz_SPH / (0.1 cosh(sigma_nu t)) - 1| over t <= 0.5 s, dz the spike tip's depth below z = 2 m",
+        "threshold": 0.25,
+        "metric": metrics.rt3d_tip_linear,
+        "rungs": RT3D_RUNGS,
+        "plot": "rt3d_tip",
     },
 ]
 

@@ -48,7 +48,8 @@ static const char *const RAMP_NAMES[] = {"none", "linear", "smooth", NULL};
 
 /* The keys allowed in the mappings that a list reader of its own reads (the others follow from
  * the key tables). */
-static const char *const BOX_KEYS[] = {"min", "max", NULL};
+static const char *const BOX_KEYS[] = {"min", "max", "floor", "ceiling", NULL};
+static const char *const SURFACE_KEYS[] = {"level", "amplitude", "wavelength", NULL};
 static const char *const CIRCLE_KEYS[] = {"centre", "radius", "inner_radius", NULL};
 static const char *const FLUID_KEYS[] = {"phase", "box", "circle", "polygon", "velocity",
                                          "velocity_gradient", "velocity_mode", NULL};
@@ -471,6 +472,24 @@ static int ordered(const struct map *m, const double *lo, const double *hi) {
 static int corners(const struct map *m, double *lo, double *hi) {
   return vec(m, "min", 1, lo) || vec(m, "max", 1, hi) || ordered(m, lo, hi);
 }
+/* The optional floor or ceiling of a box: its lower or upper face (last axis) becomes the surface
+ * z = level + amplitude * sum over the other axes of cos(2 pi x_d / wavelength), e.g. a perturbed
+ * interface between a region above (floor) and one below (ceiling). */
+static int box_surface(const struct map *m, struct shape *s) {
+  struct map fm, cm;
+  if (sub(m, "floor", SURFACE_KEYS, &fm) || sub(m, "ceiling", SURFACE_KEYS, &cm)) return 1;
+  if (fm.node && cm.node) {
+    char path[PATH_LEN];
+    return fail(m->ld, get(m, "ceiling", path), path, "got a floor and a ceiling, expected at most one");
+  }
+  s->surface = fm.node ? SURFACE_FLOOR : cm.node ? SURFACE_CEILING : SURFACE_NONE;
+  if (s->surface == SURFACE_NONE) return 0;
+  const struct map *sm = fm.node ? &fm : &cm;
+  return num(sm, "level", &R_ANY, REQUIRED, &s->surface_level) ||
+         num(sm, "amplitude", &R_ANY, REQUIRED, &s->surface_amplitude) ||
+         num(sm, "wavelength", &R_POSITIVE, REQUIRED, &s->surface_wavelength);
+}
+
 /* The polygon s read from the list seq at path is simple and encloses an area (a crossing,
  * touching or degenerate one has no well-defined inside). */
 static int polygon_simple(struct ld *ld, const struct ynode *seq, const char *path, const struct shape *s) {
@@ -524,7 +543,7 @@ static int shape(const struct map *m, struct shape *s) {
                 names_list(SHAPE_NAMES, names));
   switch (s->kind) {
   case SHAPE_BOX:
-    return sub(m, "box", BOX_KEYS, &sm) || corners(&sm, s->min, s->max);
+    return sub(m, "box", BOX_KEYS, &sm) || corners(&sm, s->min, s->max) || box_surface(&sm, s);
   case SHAPE_CIRCLE:
     if (sub(m, "circle", CIRCLE_KEYS, &sm) || vec(&sm, "centre", 1, s->centre) ||
         num(&sm, "radius", &R_POSITIVE, REQUIRED, &s->radius) ||
@@ -834,7 +853,12 @@ static int read_body(const struct map *wall, struct wall *w) {
 static int read_wall(const struct map *m, struct case_def *c, int i) {
   struct wall *w = &c->walls[i];
   int slip, side;
-  if (shape(m, &w->shape) || choice(m, "slip", SLIP_NAMES, SLIP_FREE, &slip) ||
+  char path[PATH_LEN];
+  if (shape(m, &w->shape)) return 1;
+  if (w->shape.surface != SURFACE_NONE)
+    return fail(m->ld, get(m, "box", path), path, "got a box with a floor or ceiling in a wall, expected a "
+                "plain box (a cosine surface shapes fluid regions only)");
+  if (choice(m, "slip", SLIP_NAMES, SLIP_FREE, &slip) ||
       choice(m, "fluid_side", SIDE_NAMES, FLUID_INSIDE, &side) || read_motion(m, w) || read_body(m, w))
     return 1;
   w->slip = (enum slip_kind)slip;
@@ -1031,6 +1055,16 @@ static void put_str(FILE *f, const char *indent, const char *key, const char *s)
   fputs("\"\n", f);
 }
 
+/* The cosine floor or ceiling of a box under its keys' indent. */
+static void put_surface(FILE *f, const char *inner, const struct shape *s) {
+  char deeper[32];
+  snprintf(deeper, sizeof deeper, "%s  ", inner);
+  fprintf(f, "%s%s:\n", inner, s->surface == SURFACE_FLOOR ? "floor" : "ceiling");
+  put_num(f, deeper, "level", s->surface_level);
+  put_num(f, deeper, "amplitude", s->surface_amplitude);
+  put_num(f, deeper, "wavelength", s->surface_wavelength);
+}
+
 /* A shape key at indent, its mapping entries at inner. */
 static void put_shape(FILE *f, const char *indent, const char *inner, const struct shape *s,
                       int dim) {
@@ -1049,6 +1083,7 @@ static void put_shape(FILE *f, const char *indent, const char *inner, const stru
           s->centre, dim);
   if (s->kind == SHAPE_BOX) {
     put_vec(f, inner, "max", s->max, dim);
+    if (s->surface != SURFACE_NONE) put_surface(f, inner, s);
   } else {
     put_num(f, inner, "radius", s->radius);
     put_num(f, inner, "inner_radius", s->inner_radius);

@@ -4,10 +4,19 @@
 #include <stdlib.h>
 #include "case/geometry.h"
 
+/* The height of a box's cosine surface over x (its last axis is the vertical). */
+static double surface_height(const struct shape *s, int dim, const double *x) {
+  double k = 2 * acos(-1.0) / s->surface_wavelength, sum = 0;
+  for (int d = 0; d < dim - 1; d++) sum += cos(k * x[d]);
+  return s->surface_level + s->surface_amplitude * sum;
+}
+
 static int box_contains(const struct shape *s, int dim, const double *x) {
   for (int d = 0; d < dim; d++)
     if (x[d] < s->min[d] || x[d] > s->max[d]) return 0;
-  return 1;
+  if (s->surface == SURFACE_NONE) return 1;
+  double z = surface_height(s, dim, x);   /* a point on it belongs to the floor's side only */
+  return s->surface == SURFACE_FLOOR ? x[dim - 1] >= z : x[dim - 1] < z;
 }
 
 static int circle_contains(const struct shape *s, int dim, const double *x) {
