@@ -36,10 +36,12 @@ def pct(x):
     return "%.2f %%" % (100 * x) if math.isfinite(x) else "none"
 
 
-def peer_case(key):
-    """The case column of the peer comparison's CSV rows for mpsph's setting `key`
-    (bench_peer.MPSPH_SETTINGS): the issue's settings keep the case's name."""
-    return "dambreak-val2d" + ("" if key == "mpsph" else key[len("mpsph"):].replace("_", "-"))
+def peer_case(code):
+    """The case column of the peer comparison's CSV rows of `code`: DualSPHysics and mpsph's
+    issue settings keep the case's name, mpsph's other settings (bench_peer.MPSPH_SETTINGS keys
+    mpsph_<setting>) add theirs."""
+    setting = code[len("mpsph_"):] if code.startswith("mpsph_") else ""
+    return "dambreak-val2d" + ("-" + setting.replace("_", "-") if setting else "")
 
 
 def verdict(ok):
@@ -687,14 +689,13 @@ class Report:
                    else " (shortened: not the case's whole window)"), "",
                "| code | front error, t <= %g s | points | front error, t <= %g s | points |" % (f["timed_s"], f["seconds"]),
                "|---|---|---|---|---|")
-        codes = [("dualsphysics", "DualSPHysics", "dualsphysics")]
-        codes += [(key, "mpsph, " + label, key) for key, label in p["settings"]]
-        for key, label, code in codes:
-            e = f[key]
+        codes = [("dualsphysics", "DualSPHysics")] + [(key, "mpsph, " + label) for key, label in p["settings"]]
+        for code, label in codes:
+            e = f[code]
             self.w("| %s | %s | %s | %s | %s |" % (label, pct(e["timed"][0]), e["timed"][1], pct(e["window"][0]), e["window"][1]))
             for metric, err in (("front_error_timed_window_" + code, e["timed"][0]), ("front_error_window_" + code, e["window"][0])):
                 if math.isfinite(err):
-                    self.row("peer", peer_case(key), p["fluid"], 2, 0, metric, [err], "fraction")
+                    self.row("peer", peer_case(code), p["fluid"], 2, 0, metric, [err], "fraction")
         self.w("")
 
     def write(self, out):
