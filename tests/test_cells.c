@@ -1,5 +1,6 @@
 /* test_cells.c — the cell-list neighbours (sorted by cell and id, 3^dim stencil) equal the
- * brute-force neighbour set on random particles, in 2D and 3D, the sort is by (cell, id), and
+ * brute-force neighbour set on random particles, in 2D and 3D, the sort is by cell, each cell's
+ * fluid first, then by id, the fluid-only ranges hold exactly the fluid within their radius, and
  * the neighbour lists (bit masks over the stencil) read back every slot within their radius, in
  * the stencil's order (global cell order, then slot order). */
 #include <stdlib.h>
@@ -26,6 +27,39 @@ static long brute_count(const struct parts *p, long i, double support2) {
     count += r2 < support2;
   }
   return count;
+}
+
+/* The fluid slots within radius2 of point x, by brute force. */
+static long brute_fluid_near(const struct parts *p, const double *x, double radius2) {
+  long count = 0;
+  for (long j = 0; j < p->n_owned; j++) {
+    double r2 = 0;
+    for (int d = 0; d < p->dim; d++) r2 += (x[d] - p->x[d][j]) * (x[d] - p->x[d][j]);
+    count += r2 < radius2 && p->phase[j] != PHASE_WALL;
+  }
+  return count;
+}
+
+/* The slots within radius of point x over the fluid-only ranges of the cells around x's cell. */
+static long ranged_fluid_near(const struct space *s, const struct parts *p, const double *x, double radius) {
+  struct neighbour_ranges r;
+  long count = 0;
+  neighbour_ranges_fluid_within(s, grid_cell_clamped(&s->grid, x), x, radius, &r);
+  for (int k = 0; k < r.n; k++)
+    for (long j = r.start[k]; j < r.start[k] + r.count[k]; j++) {
+      double r2 = 0;
+      for (int d = 0; d < p->dim; d++) r2 += (x[d] - p->x[d][j]) * (x[d] - p->x[d][j]);
+      count += r2 < radius * radius;   /* a wall ghost in the ranges would count too */
+    }
+  return count;
+}
+
+/* Slot j goes after slot i in the sort: a later cell, or the same cell's boundary after its fluid,
+ * or the same cell and kind with a larger id. */
+static int sorted_after(const struct parts *p, long i, long j) {
+  int wall_i = p->phase[i] == PHASE_WALL, wall_j = p->phase[j] == PHASE_WALL;
+  if (p->cell[i] != p->cell[j]) return p->cell[i] < p->cell[j];
+  return wall_i != wall_j ? wall_j : p->id[i] < p->id[j];
 }
 
 static long cell_count_pairs(const struct space *s, const struct parts *p, long i, double support2) {
@@ -92,9 +126,16 @@ static void check_dim(int dim, long n, double support, long top_per_rank) {
   space_sort(&s, &p, 0, n);
   space_index(&s, &p);
   long sorted = 1, mismatches = 0;
-  for (long i = 1; i < n; i++)
-    sorted &= p.cell[i - 1] < p.cell[i] || (p.cell[i - 1] == p.cell[i] && p.id[i - 1] < p.id[i]);
-  CHECK(sorted, "%dD, blocks of %ld: particles sorted by (cell, id)", dim, s.block);
+  for (long i = 1; i < n; i++) sorted &= sorted_after(&p, i - 1, i);
+  CHECK(sorted, "%dD, blocks of %ld: particles sorted by cell, fluid first, then id", dim, s.block);
+  for (long i = 0; i < n; i++) {   /* points between the particles, radii below and up to the cell edge */
+    double x[3] = {0, 0, 0}, radius = support * (0.5 + 0.5 * (i % 3) / 2.0);
+    for (int d = 0; d < dim; d++) x[d] = 0.5 * (p.x[d][i] + p.x[d][(i * 31 + 7) % n]);
+    mismatches += brute_fluid_near(&p, x, radius * radius) != ranged_fluid_near(&s, &p, x, radius);
+  }
+  CHECK(mismatches == 0, "%dD, blocks of %ld: %ld points whose fluid-only ranges miss or add fluid", dim,
+        s.block, mismatches);
+  mismatches = 0;
   for (long i = 0; i < n; i++)
     mismatches += brute_count(&p, i, support * support) != cell_count_pairs(&s, &p, i, support * support);
   CHECK(mismatches == 0, "%dD, blocks of %ld: %ld particles with a wrong neighbour count", dim,

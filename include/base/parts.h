@@ -6,7 +6,8 @@
 #include <stdint.h>
 #include "base/kinds.h"
 
-/** Particle arrays. Indices [0, n_owned) are owned by this rank, sorted by (cell, id);
+/** Particle arrays. Indices [0, n_owned) are owned by this rank, sorted by cell, each
+ *  cell's fluid before its boundary particles, then by id;
  *  [n_owned, n_owned + n_halo) are copies of neighbouring ranks' particles, sorted likewise.
  *  Vectors are stored per component: x[0..dim-1][i]. Unused components (z in 2D) are NULL. */
 struct parts {

@@ -15,7 +15,8 @@
 #include "parallel/space.h"
 
 /* The longest pipeline engine_assemble builds: 1 halo + 4 Shepard (delta-sph) + 3 wall ghosts + 3
- * free surface + 3 gradients/halo/rhs + 3 surface tension + 1 wall guard = 18; the dual stepper's
+ * free surface + 3 gradients/halo/rhs + 3 surface tension + 1 wall guard = 18 (without the Shepard
+ * pass, the volumes and lists around the wall ghosts take 3 of its 4 places); the dual stepper's
  * table is shorter (a static assertion in engine_step_dual.c). */
 #define ENGINE_MAX_OPS 18
 #define ENGINE_CELL_SKIN 1.15   /* cell edge / kernel support: room for motion within a step; the

@@ -26,6 +26,7 @@ struct space {
   long n_local_tops;     /* top cells owned or within the halo's reach */
   long *cell_start;      /* [n_local_tops * cells_per_top] first particle slot of each local fine cell */
   int *cell_count;       /* [n_local_tops * cells_per_top] its particles on this rank (0 when absent) */
+  int *cell_fluid;       /* [n_local_tops * cells_per_top] of them fluid: the first ones (space_sort) */
   long n_local_cells;    /* local fine cells inside the domain */
   int *local_order;      /* [n_local_cells] their local indices in increasing global index */
   long n_owned_cells;
@@ -105,6 +106,12 @@ void neighbour_ranges(const struct space *s, long c, struct neighbour_ranges *r)
 void neighbour_ranges_within(const struct space *s, long c, const double *x, double radius,
                              struct neighbour_ranges *r);
 
+/** neighbour_ranges_within over the fluid particles of each cell only (the first cell_fluid
+ *  slots of each): the candidates of a point that reads the fluid alone, without scanning the
+ *  wall ghosts of the cells around it. */
+void neighbour_ranges_fluid_within(const struct space *s, long c, const double *x, double radius,
+                                   struct neighbour_ranges *r);
+
 /** Bytes held by the space's arrays (top-cell owners, fine-cell index, sort scratch). */
 long space_bytes(const struct space *s);
 
@@ -126,15 +133,16 @@ void space_set_owner(struct space *s, const int *top_owner);
  *  outside the domain, or -1 when all are inside. */
 long space_assign_cells(const struct space *s, struct parts *p, long first, long n);
 
-/** Sort particles [first, first+n) (all in local cells) by (cell, id) with a counting sort on
- *  the local cells in global order. */
+/** Sort particles [first, first+n) (all in local cells) by (cell, id), with each cell's fluid
+ *  before its boundary particles, by a counting sort on the local cells in global order. */
 void space_sort(struct space *s, struct parts *p, long first, long n);
 
 /** Keep the owned particles whose cell this rank owns, in their order, in the first owned slots
  *  (n_owned becomes their count); the others are dropped (sent away first). */
 void space_keep_own(const struct space *s, struct parts *p);
 
-/** Rebuild cell_start/cell_count for owned and halo particles (both sorted by (cell, id)). */
+/** Rebuild cell_start, cell_count and cell_fluid for owned and halo particles (both sorted by
+ *  (cell, fluid before boundary, id)). */
 void space_index(struct space *s, const struct parts *p);
 
 #endif

@@ -53,27 +53,21 @@ void pass_neighbour_lists(struct pass_ctx *ctx);
  *  after the halo updates of the state and the wall ghost values. */
 void pass_volumes(struct pass_ctx *ctx);
 
-/** Shepard sums at one point: {sum W V, and sum W V times p, rho, u[3]} over every fluid phase
- *  (all; left zero in a one-phase case, where it would equal phase[0]) and over each phase on its
- *  own (phase[k]); per phase also sum W V rho r[3] when with_rho_r (the density-weighted
- *  interface pressure's ghosts need it). */
-enum { SHEPARD_W, SHEPARD_P, SHEPARD_RHO, SHEPARD_U, SHEPARD_RHO_R = SHEPARD_U + 3, SHEPARD_SUMS = SHEPARD_RHO_R + 3 };
-struct shepard {
-  double all[SHEPARD_SUMS], phase[CASE_MAX_PHASES][SHEPARD_SUMS];
-  int with_rho_r, one_phase;
-};
+/** pass_volumes of the fluid slots alone: what the wall ghosts' Shepard sums read, before the
+ *  ghosts have their values. */
+void pass_fluid_volumes(struct pass_ctx *ctx);
+
+/** pass_volumes of the boundary slots alone: after the wall ghost values and their halo update,
+ *  which complete the volumes pass_fluid_volumes began. */
+void pass_boundary_volumes(struct pass_ctx *ctx);
 
 /** Called for each slot j within the kernel support of a point, with wv = W V_j [-]. */
 typedef void (*near_fn)(void *arg, const struct pass_ctx *ctx, long j, double wv);
 
 /** Call fn for every fluid particle (and boundary particle, KIND_BOUNDARY: wall ghost, if
- *  with_walls) within the kernel support of
- *  xs, over the cells around xs's cell in global cell order; returns the number of calls. */
+ *  with_walls) within the kernel support of xs, over the cells around xs's cell in global cell
+ *  order, with wv = W m_j / rho_j; returns the number of calls. */
 long visit_near(const struct pass_ctx *ctx, const double *xs, int with_walls, near_fn fn, void *arg);
-
-/** Shepard sums per phase at xs over the fluid particles of the cells around xs's cell; counts
- *  the pairs into *pairs. */
-void shepard_at(const struct pass_ctx *ctx, const double *xs, struct shepard *s, long *pairs);
 
 /** The mirror point of wall ghost k now [m]: its position plus its body-frame offset (the
  *  mirror array), turned with the wall. */

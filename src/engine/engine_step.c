@@ -141,9 +141,14 @@ void engine_add_cell_pass(struct engine *e, const char *name, pass_fn pass, int 
   add_op(e, (struct stage_op){.name = name, .pass = pass, .once_per_step = once, .cellwise = 1});
 }
 
+/* The owned fluid's neighbour lists, built at the first stage of a step. */
+static void add_neighbour_lists(struct engine *e) {
+  engine_add_op(e, "neighbour lists of the owned fluid (once per step)", pass_neighbour_lists, 0, 1);
+}
+
 void engine_add_volumes_and_lists(struct engine *e) {
   engine_add_op(e, "volumes m/rho of owned and halo particles", pass_volumes, 0, 0);
-  engine_add_op(e, "neighbour lists of the owned fluid (once per step)", pass_neighbour_lists, 0, 1);
+  add_neighbour_lists(e);
 }
 
 /* DESIGN.md data flow 3: what a scene does not use is not computed. */
@@ -217,12 +222,20 @@ void engine_assemble_stage(struct engine *e) {
   unsigned f = e->prm.features;
   engine_add_op(e, "halo: positions, velocities, densities, pressures", NULL, HF_POS | HF_VEL | HF_RHO | HF_P, 0);
   if (s->pressure) s->pressure(e);
+  /* the ghosts read this stage's fluid volumes; with a pressure pass, they are computed before it */
+  int split_volumes = (f & FEAT_WALLS) && !s->pressure;
+  if (split_volumes) engine_add_op(e, "volumes m/rho of the fluid (owned and halo)", pass_fluid_volumes, 0, 0);
   if (f & FEAT_WALLS) {
     engine_add_op(e, "wall ghosts: lists at the fixed walls' mirror points (once per step)", pass_wall_ghost_lists, 0, 1);
     engine_add_op(e, "wall ghosts: Shepard interpolation at mirror points", pass_wall_ghosts, 0, 0);
     engine_add_op(e, "halo: wall ghost values", NULL, HF_VEL | HF_RHO | HF_P | HF_MASS, 0);
   }
-  if (!s->pressure) engine_add_volumes_and_lists(e);
+  if (split_volumes) {
+    engine_add_op(e, "volumes m/rho of the wall ghosts (owned and halo)", pass_boundary_volumes, 0, 0);
+    add_neighbour_lists(e);
+  } else if (!s->pressure) {
+    engine_add_volumes_and_lists(e);
+  }
   if (f & FEAT_SURFACE) {
     engine_add_cell_pass(e, "free surface: eigenvalue + umbrella detection, normals (once per step)", pass_free_surface, 1);
     engine_add_op(e, "halo: free-surface flags (once per step)", NULL, HF_SURFACE, 1);
@@ -351,6 +364,7 @@ void engine_ghosts_now(struct engine *e) {
     halo_update(&e->halo, fields, halo_field_list(e, HF_RHO_SHEPARD | HF_P, fields));
   }
   if (walls) {
+    if (!shepard) pass_fluid_volumes(&ctx);
     pass_wall_ghost_lists(&ctx);
     pass_wall_ghosts(&ctx);
     halo_update(&e->halo, fields, halo_field_list(e, HF_VEL | HF_RHO | HF_P | HF_MASS, fields));

@@ -1,5 +1,6 @@
 /* space.c — the two-level cell space: top cells and their owners, the fine-cell index over the
  * local top cells, particle sorting by (cell, id). */
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include "parallel/space.h"
@@ -55,13 +56,14 @@ void space_init(struct space *s, const struct grid *g, int rank, int n_ranks, in
 static void free_fine(struct space *s) {
   free(s->cell_start);
   free(s->cell_count);
+  free(s->cell_fluid);
   free(s->local_order);
   free(s->rank_of_local);
   free(s->owned_cells);
   free(s->by_reach);
   free(s->bucket);
   s->cell_start = NULL;
-  s->cell_count = s->local_order = s->rank_of_local = s->owned_cells = s->by_reach = s->bucket = NULL;
+  s->cell_count = s->cell_fluid = s->local_order = s->rank_of_local = s->owned_cells = s->by_reach = s->bucket = NULL;
 }
 
 void space_free(struct space *s) {
@@ -134,6 +136,7 @@ static void build_fine(struct space *s) {
   long slots = s->n_local_tops * s->cells_per_top;
   s->cell_start = xcalloc(slots + 1, sizeof(long));
   s->cell_count = xcalloc(slots + 1, sizeof(int));
+  s->cell_fluid = xcalloc(slots + 1, sizeof(int));
   s->rank_of_local = xcalloc(slots + 1, sizeof(int));
   s->bucket = xcalloc(slots + 1, sizeof(int));
   struct cell_pair *cells = local_cells_sorted(s);
@@ -197,8 +200,15 @@ static void ensure_scratch(struct space *s, long n) {
   s->scratch_capacity = n;
 }
 
+/* 1 if slot a goes after slot b within their cell: the fluid before the boundary particles (the
+ * fluid-only ranges of neighbour_ranges_fluid_within are each cell's first slots), then by id. */
+static int after_in_cell(const struct parts *p, int a, int b) {
+  int wall_a = part_has(p->phase[a], KIND_BOUNDARY), wall_b = part_has(p->phase[b], KIND_BOUNDARY);
+  return wall_a != wall_b ? wall_a > wall_b : p->id[a] > p->id[b];
+}
+
 /* Counting sort by the cells' positions in global order into s->order (the keys held in the
- * scratch meanwhile), then insertion sort by id inside each cell. */
+ * scratch meanwhile), then insertion sort inside each cell: fluid first, then by id. */
 static void sort_order(struct space *s, const struct parts *p, long first, long n) {
   int *bucket = s->bucket, *key = (int *)s->scratch;
   memset(bucket, 0, (s->n_local_cells + 1) * sizeof(int));
@@ -211,7 +221,7 @@ static void sort_order(struct space *s, const struct parts *p, long first, long 
   for (long k = 1; k < n; k++) {
     int cur = s->order[k];
     long j = k;
-    while (j > 0 && p->cell[s->order[j - 1]] == p->cell[cur] && p->id[s->order[j - 1]] > p->id[cur]) {
+    while (j > 0 && p->cell[s->order[j - 1]] == p->cell[cur] && after_in_cell(p, s->order[j - 1], cur)) {
       s->order[j] = s->order[j - 1];
       j--;
     }
@@ -243,10 +253,18 @@ void space_sort(struct space *s, struct parts *p, long first, long n) {
 
 void space_index(struct space *s, const struct parts *p) {
   memset(s->cell_count, 0, s->n_local_tops * s->cells_per_top * sizeof(int));
+  memset(s->cell_fluid, 0, s->n_local_tops * s->cells_per_top * sizeof(int));
   long n = p->n_owned + p->n_halo;
   for (long i = 0; i < n; i++) {
     long l = space_local_cell(s, p->cell[i]);
+    int fluid = !part_has(p->phase[i], KIND_BOUNDARY);
+    if (fluid && s->cell_fluid[l] != s->cell_count[l]) {   /* space_sort's order, relied on by the ranges */
+      fprintf(stderr, "mpsph: internal error: slot %ld, fluid, follows a boundary particle in cell %d\n", i,
+              p->cell[i]);
+      exit(3);
+    }
     if (s->cell_count[l]++ == 0) s->cell_start[l] = i;
+    s->cell_fluid[l] += fluid;
   }
 }
 
@@ -264,9 +282,10 @@ static void axis_gaps(const struct grid *g, int d, long i, double x, double *gap
   }
 }
 
-/* The particle ranges of the cells around c present on this rank; with x, only those whose box
- * lies within squared distance cull2 of x. */
-static void ranges_around(const struct space *s, long c, const double *x, double cull2,
+/* The particle ranges of the cells around c present on this rank, of all their particles (count
+ * cell_count) or of their fluid (cell_fluid); with x, only those whose box lies within squared
+ * distance cull2 of x. */
+static void ranges_around(const struct space *s, long c, const double *x, double cull2, const int *count,
                           struct neighbour_ranges *r) {
   const long *n = s->grid.n;
   const long i[3] = {c % n[0], (c / n[0]) % n[1], c / (n[0] * n[1])}, ix = i[0], iy = i[1], iz = i[2];
@@ -282,19 +301,26 @@ static void ranges_around(const struct space *s, long c, const double *x, double
         if (xi < 0 || xi >= n[0]) continue;
         if (x && gap2[0][xi - ix + 1] + gap2[1][y - iy + 1] + gap2[2][z - iz + 1] > cull2) continue;
         long l = space_local_xyz(s, xi, y, z);
-        if (l < 0 || !s->cell_count[l]) continue;
+        if (l < 0 || !count[l]) continue;
         r->start[r->n] = s->cell_start[l];
-        r->count[r->n++] = s->cell_count[l];
+        r->count[r->n++] = count[l];
       }
     }
   }
 }
 
-void neighbour_ranges(const struct space *s, long c, struct neighbour_ranges *r) { ranges_around(s, c, NULL, 0, r); }
+void neighbour_ranges(const struct space *s, long c, struct neighbour_ranges *r) {
+  ranges_around(s, c, NULL, 0, s->cell_count, r);
+}
 
 void neighbour_ranges_within(const struct space *s, long c, const double *x, double radius,
                              struct neighbour_ranges *r) {
-  ranges_around(s, c, x, radius * radius * (1 + RANGE_CULL_MARGIN), r);
+  ranges_around(s, c, x, radius * radius * (1 + RANGE_CULL_MARGIN), s->cell_count, r);
+}
+
+void neighbour_ranges_fluid_within(const struct space *s, long c, const double *x, double radius,
+                                   struct neighbour_ranges *r) {
+  ranges_around(s, c, x, radius * radius * (1 + RANGE_CULL_MARGIN), s->cell_fluid, r);
 }
 
 void space_keep_own(const struct space *s, struct parts *p) {

@@ -84,6 +84,17 @@ void pass_volumes(struct pass_ctx *ctx) {
   for (long i = 0, n = p->n_owned + p->n_halo; i < n; i++) ctx->w->vol[i] = p->m[i] / p->rho[i];
 }
 
+/* The volumes m/rho of the slots whose boundary flag (KIND_BOUNDARY) is `boundary`. */
+static void volumes_of(struct pass_ctx *ctx, int boundary) {
+  const struct parts *p = ctx->p;
+  for (long i = 0, n = p->n_owned + p->n_halo; i < n; i++)
+    if (part_has(p->phase[i], KIND_BOUNDARY) == boundary) ctx->w->vol[i] = p->m[i] / p->rho[i];
+}
+
+void pass_fluid_volumes(struct pass_ctx *ctx) { volumes_of(ctx, 0); }
+
+void pass_boundary_volumes(struct pass_ctx *ctx) { volumes_of(ctx, 1); }
+
 /* Zero the gradient-pass results of a wall ghost. */
 static void clear_ghost(struct pass_ctx *ctx, long i, const struct neighbours *nb) {
   (void)nb;

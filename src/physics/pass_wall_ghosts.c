@@ -10,22 +10,35 @@
 #include <string.h>
 #include "physics/passes.h"
 
+/* Shepard sums at one point: {sum W V, and sum W V times p, rho, u[3]} over every fluid phase
+ * (all; left zero in a one-phase case, where it would equal phase[0]) and over each phase on its
+ * own (phase[k]); per phase also sum W V rho r[3] when with_rho_r (the density-weighted
+ * interface pressure's ghosts need it). */
+enum { SHEPARD_W, SHEPARD_P, SHEPARD_RHO, SHEPARD_U, SHEPARD_RHO_R = SHEPARD_U + 3, SHEPARD_SUMS = SHEPARD_RHO_R + 3 };
+struct shepard {
+  double all[SHEPARD_SUMS], phase[CASE_MAX_PHASES][SHEPARD_SUMS];
+  int with_rho_r, one_phase;
+};
+
 /* Whether candidate j lies within the kernel support of xs (the squared distance summed over
- * `dim` axes, a literal where it is inlined), and its weight W V_j into *wv if it does. */
+ * `dim` axes, a literal where it is inlined), and its weight W V_j into *wv if it does: V_j from
+ * vol (this stage's volumes m/rho, pass_fluid_volumes) or, with vol NULL, m_j / rho_j. */
 static inline __attribute__((always_inline)) int near_weight(const struct pass_ctx *ctx, const double *xs, long j,
-                                                             const int dim, double *wv) {
+                                                             const int dim, const double *vol, double *wv) {
   const struct parts *p = ctx->p;
   double r2 = 0;
   for (int d = 0; d < dim; d++) r2 += (xs[d] - p->x[d][j]) * (xs[d] - p->x[d][j]);
   if (r2 >= ctx->prm->kern.support2) return 0;
-  *wv = kernel_w(&ctx->prm->kern, r2) * p->m[j] / p->rho[j];
+  *wv = kernel_w(&ctx->prm->kern, r2) * (vol ? vol[j] : p->m[j] / p->rho[j]);
   return 1;
 }
 
-/* Call fn for candidate j if it lies within the kernel support of xs; 1 if it did. */
-static inline int visit_if_near(const struct pass_ctx *ctx, const double *xs, long j, near_fn fn, void *arg) {
+/* Call fn for candidate j if it lies within the kernel support of xs (weights as near_weight's); 1
+ * if it did. */
+static inline int visit_if_near(const struct pass_ctx *ctx, const double *xs, long j, const double *vol, near_fn fn,
+                                void *arg) {
   double wv;
-  if (!near_weight(ctx, xs, j, ctx->p->dim, &wv)) return 0;
+  if (!near_weight(ctx, xs, j, ctx->p->dim, vol, &wv)) return 0;
   fn(arg, ctx, j, wv);
   return 1;
 }
@@ -39,28 +52,38 @@ static inline __attribute__((always_inline)) void add_values(double *a, const st
   for (int d = 0; d < dim; d++) a[SHEPARD_U + d] += wv * p->v[d][j];
 }
 
-/* The stencil ranges of the cell holding point xs. */
-static void ranges_at(const struct pass_ctx *ctx, const double *xs, struct neighbour_ranges *r) {
-  neighbour_ranges(ctx->space, grid_cell_clamped(&ctx->space->grid, xs), r);
+/* The fluid of the cells around point xs within the kernel support (the boundary particles of
+ * each cell follow its fluid, space_sort). */
+static void fluid_ranges_at(const struct pass_ctx *ctx, const double *xs, struct neighbour_ranges *r) {
+  neighbour_ranges_fluid_within(ctx->space, grid_cell_clamped(&ctx->space->grid, xs), xs, ctx->prm->kern.support, r);
 }
 
-/* The ranges of a fixed mirror point's list: the stencil of xs's cell without the cells farther
- * than the list radius, the same at the list's build and at every stage of the step (the cells
- * do not change within it). */
+/* The ranges of a fixed mirror point's list: the fluid of the stencil of xs's cell without the
+ * cells farther than the list radius, the same at the list's build and at every stage of the step
+ * (the cells do not change within it). */
 static void list_ranges_at(const struct pass_ctx *ctx, const double *xs, struct neighbour_ranges *r) {
-  neighbour_ranges_within(ctx->space, grid_cell_clamped(&ctx->space->grid, xs), xs, ctx->prm->list_radius, r);
+  neighbour_ranges_fluid_within(ctx->space, grid_cell_clamped(&ctx->space->grid, xs), xs, ctx->prm->list_radius,
+                                r);
+}
+
+/* Call fn for every particle of the ranges r (but the boundary particles unless with_walls) within
+ * the kernel support of xs, weights as near_weight's; returns the number of calls. */
+static long visit_ranges(const struct pass_ctx *ctx, const double *xs, const struct neighbour_ranges *r,
+                         int with_walls, const double *vol, near_fn fn, void *arg) {
+  long n = 0;
+  for (int k = 0; k < r->n; k++)
+    for (long j = r->start[k]; j < r->start[k] + r->count[k]; j++) {
+      if (part_has(ctx->p->phase[j], KIND_BOUNDARY) && !with_walls) continue;
+      n += visit_if_near(ctx, xs, j, vol, fn, arg);
+    }
+  return n;
 }
 
 long visit_near(const struct pass_ctx *ctx, const double *xs, int with_walls, near_fn fn, void *arg) {
   struct neighbour_ranges r;
-  long n = 0;
-  ranges_at(ctx, xs, &r);
-  for (int k = 0; k < r.n; k++)
-    for (long j = r.start[k]; j < r.start[k] + r.count[k]; j++) {
-      if (part_has(ctx->p->phase[j], KIND_BOUNDARY) && !with_walls) continue;
-      n += visit_if_near(ctx, xs, j, fn, arg);
-    }
-  return n;
+  if (with_walls) neighbour_ranges(ctx->space, grid_cell_clamped(&ctx->space->grid, xs), &r);
+  else fluid_ranges_at(ctx, xs, &r);
+  return visit_ranges(ctx, xs, &r, with_walls, NULL, fn, arg);
 }
 
 /* The candidates of a mirror point's list (nlist_point_add: a header word, then the kept words
@@ -103,7 +126,7 @@ static long visit_listed(const struct pass_ctx *ctx, const double *xs, const uin
   struct listed it;
   long n = 0;
   listed_start(&it, ctx, xs, point);
-  for (long j; listed_next(&it, &j);) n += visit_if_near(ctx, xs, j, fn, arg);
+  for (long j; listed_next(&it, &j);) n += visit_if_near(ctx, xs, j, ctx->w->vol, fn, arg);
   return n;
 }
 
@@ -118,7 +141,7 @@ static inline __attribute__((always_inline)) long listed_one_phase_dim(const str
   long n = 0;
   listed_start(&it, ctx, xs, point);
   for (long j; listed_next(&it, &j);)
-    if (near_weight(ctx, xs, j, dim, &wv)) {
+    if (near_weight(ctx, xs, j, dim, ctx->w->vol, &wv)) {
       add_values(sums, ctx->p, j, wv, dim);
       n++;
     }
@@ -152,9 +175,13 @@ static long shepard_listed(const struct pass_ctx *ctx, const double *xs, const u
   return listed_one_phase_dim(ctx, xs, point, s->phase[0], 2);
 }
 
-void shepard_at(const struct pass_ctx *ctx, const double *xs, struct shepard *s, long *pairs) {
+/* The Shepard sums s at mirror point xs of a moving wall's ghost, which has no list: over the fluid
+ * of the cells around it, with this stage's volumes. */
+static void shepard_at(const struct pass_ctx *ctx, const double *xs, struct shepard *s, long *pairs) {
+  struct neighbour_ranges r;
   shepard_clear(ctx, s);
-  *pairs += visit_near(ctx, xs, 0, add_shepard, s);
+  fluid_ranges_at(ctx, xs, &r);
+  *pairs += visit_ranges(ctx, xs, &r, 0, ctx->w->vol, add_shepard, s);
 }
 
 static int majority_phase(const struct pass_ctx *ctx, const struct shepard *s) {
