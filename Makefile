@@ -163,12 +163,14 @@ bench: deps
 	@$(PYTHON) scripts/bench.py $(if $(BENCH_QUICK),--quick) $(if $(DUALSPHYSICS),--dualsphysics $(DUALSPHYSICS)) \
 	  $(if $(DUALSPHYSICS_SRC),--dualsphysics-src $(DUALSPHYSICS_SRC))
 
-# The validation ladder and doc/validation/README.md; QUICK=1: the cheap rungs only (~19 min on
-# 2 cores). Runs go to runs/validate/; VALIDATE_ARGS passes e.g. --only STUDY (which updates that
-# study's part of the report, keeping the others) or --reuse.
+# The validation ladder and doc/validation/README.md; QUICK=1: the cheap rungs only (user guide
+# 1.8 for their time). Runs go to runs/validate/, as many at once as their ranks fit in JOBS cores
+# (default: this machine's); VALIDATE_ARGS passes e.g. --only STUDY (which updates that study's part
+# of the report, keeping the others) or --reuse.
+JOBS ?= $(shell nproc)
 validate: deps
 	@$(MAKE) --no-print-directory build/mpsph
-	@$(PYTHON) scripts/validate.py $(if $(filter 1,$(QUICK)),--quick) $(VALIDATE_ARGS)
+	@$(PYTHON) scripts/validate.py $(if $(filter 1,$(QUICK)),--quick) --jobs $(JOBS) $(VALIDATE_ARGS)
 
 clean:
 	rm -rf build

@@ -22,6 +22,9 @@ Usage: scripts/validate.py [--quick] [--only ID[,ID]] [--reuse] [--runs DIR] [--
   --list    print the rungs with their commands and exit
   --rung K  run only the K-th rung of the selection (0-based, as --list orders them), no report:
             for job arrays; a later --reuse invocation writes the report from the runs
+  --jobs N  run the selected rungs first, several at once while their ranks fit in N cores (make
+            validate JOBS=N; default 1: one after the other); each run's wall time is its own, taken
+            while the others ran beside it
 MPSPH_LAUNCHER (default "scripts/mpirun -n {np}") starts the ranks, e.g. "srun -n {np}".
 """
 import argparse
@@ -88,35 +91,75 @@ def finished_run(study, r, out):
     return rec, False
 
 
-def run_rung(study, r, out, reuse, done=set()):
-    """Run one rung (or reuse a run of this invocation, which studies may share, or with reuse a
-    finished earlier run with the same case file and overrides, finished_run). Returns the run
-    record (status, steps, particles, wall time [s])."""
-    record_path = os.path.join(out, "validate.json")
-    cmd = command(study, r, out)
-    if reuse or out in done:
-        rec, stale = finished_run(study, r, out)
-        if rec:
-            return rec
-        if stale:
-            print("validate: %s ran with other settings than the study's now; running it again" % out, flush=True)
-    os.makedirs(out, exist_ok=True)
-    timings = os.path.join(out, "timings.csv")
-    if os.path.exists(timings):
-        os.remove(timings)   # a run that stops before its summary must not show an older one's
-    start = time.time()
-    with open(os.path.join(out, "mpsph.log"), "w") as log:
-        status = subprocess.call(cmd, stdout=log, stderr=subprocess.STDOUT)
-    wall = time.time() - start
-    rec = {"status": status, "wall": wall, "command": " ".join(cmd), "steps": 0, "fluid": 0, "wall_particles": 0}
-    if os.path.exists(timings):   # the run's summary (engine_report.c), also after status 2
-        value = {row["name"]: row["value"] for row in read_timings(timings)}
-        rec.update(steps=int(value["steps"]), fluid=int(value["fluid_particles"]),
-                   wall_particles=int(value["wall_particles"]))
-    with open(record_path, "w") as f:
-        json.dump(rec, f)
-    done.add(out)
+def reusable(study, r, out, reuse, done):
+    """The record of a run that need not run again (one of this invocation, which studies may share,
+    or with reuse a finished earlier run with the same case file and overrides, finished_run), or
+    None."""
+    if not (reuse or out in done):
+        return None
+    rec, stale = finished_run(study, r, out)
+    if stale and not rec:
+        print("validate: %s ran with other settings than the study's now; running it again" % out, flush=True)
     return rec
+
+
+class Launched:
+    """A rung's run started in the background: its folder, command, process, log and start time."""
+
+    def __init__(self, study, r, out):
+        self.np, self.out, self.cmd = r["np"], out, command(study, r, out)
+        os.makedirs(out, exist_ok=True)
+        timings = os.path.join(out, "timings.csv")
+        if os.path.exists(timings):
+            os.remove(timings)   # a run that stops before its summary must not show an older one's
+        self.log = open(os.path.join(out, "mpsph.log"), "w")
+        self.start = time.time()
+        self.proc = subprocess.Popen(self.cmd, stdout=self.log, stderr=subprocess.STDOUT)
+
+    def record(self, done):
+        """Wait for the run; write and return its record (status, steps, particles, wall time [s])."""
+        status = self.proc.wait()
+        wall = time.time() - self.start
+        self.log.close()
+        rec = {"status": status, "wall": wall, "command": " ".join(self.cmd), "steps": 0, "fluid": 0,
+               "wall_particles": 0}
+        timings = os.path.join(self.out, "timings.csv")
+        if os.path.exists(timings):   # the run's summary (engine_report.c), also after status 2
+            value = {row["name"]: row["value"] for row in read_timings(timings)}
+            rec.update(steps=int(value["steps"]), fluid=int(value["fluid_particles"]),
+                       wall_particles=int(value["wall_particles"]))
+        with open(os.path.join(self.out, "validate.json"), "w") as f:
+            json.dump(rec, f)
+        done.add(self.out)
+        return rec
+
+
+DONE = set()   # the folders of the runs of this invocation
+
+
+def run_rung(study, r, out, reuse, done=DONE):
+    """Run one rung, or reuse its run (reusable). Returns the run record (status, steps, particles,
+    wall time [s])."""
+    return reusable(study, r, out, reuse, done) or Launched(study, r, out).record(done)
+
+
+def run_packed(todo, args, done=DONE):
+    """Run the rungs todo [(study, rung)] that are not reusable, as many at once as their ranks fit in
+    args.jobs cores (a run with more ranks than that alone), in order; their records go to their
+    folders, where run_study reads them back."""
+    running, queue = [], [(s, r, rung_dir(args.runs, s, r)) for s, r in todo]
+    queue = [(s, r, out) for s, r, out in queue if not reusable(s, r, out, args.reuse, done)]
+    while queue or running:
+        busy = sum(run.np for run in running)
+        if queue and (not running or busy + queue[0][1]["np"] <= args.jobs):
+            s, r, out = queue.pop(0)
+            print("%s: %s dx = %g on %d ranks started" % (s["id"], r["label"], r["dx"], r["np"]), flush=True)
+            running.append(Launched(s, r, out))
+            continue
+        time.sleep(0.2)
+        for run in [run for run in running if run.proc.poll() is not None]:
+            run.record(done)
+            running.remove(run)
 
 
 def signal_stop(out):
@@ -376,6 +419,7 @@ def main():
     ap.add_argument("--coarsest", action="store_true")
     ap.add_argument("--runs", default="runs/validate")
     ap.add_argument("--report", default="doc/validation")
+    ap.add_argument("--jobs", type=int, default=1)
     args = ap.parse_args()
     chosen = [s for s in STUDIES if not args.only or s["id"] in args.only.split(",")]
     if args.coarsest:
@@ -389,6 +433,8 @@ def main():
         s, r = todo[args.rung]
         return run_rung(s, r, rung_dir(args.runs, s, r), args.reuse)["status"]
     start = time.time()
+    if args.jobs > 1:
+        run_packed(todo, args)
     results = [(s, run_study(s, args)) for s in chosen]
     write_report(args, results, time.time() - start)
     print("report: %s/README.md" % args.report)

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# test-cores: 1
+# test-cores: 2
 # make validate's machinery on its cheapest rungs: scripts/validate.py runs the coarsest rung of
 # the one-fluid oscillating drop (R/dx = 12.5) and of the standing wave, computes their errors
 # and writes the report. Asserts the report, its CSV and plots exist with a row per study, and
@@ -9,7 +9,7 @@
 # current ones is run again (the dam-break front's rung, whose overrides hold a value with a
 # space, is read back), and a run a stop signal ended before its end is not taken as finished. And
 # --only with a report in place: only the chosen study's section and
-# rows are replaced.
+# rows are replaced. And --jobs 2: two 1-rank rungs run at once, with the same results.
 set -eu
 cd "$(dirname "$0")/.."
 PYTHON=${PYTHON:-/usr/bin/python3}
@@ -113,3 +113,19 @@ PY
 grep -q "run not finished: stopped by SIGTERM at step 9" "$out/stopped.log" ||
   { echo "FAIL: a signal-stopped run is not reported as unfinished"; exit 1; }
 echo "reuse: a run stopped by a signal is reported as not finished"
+
+# --jobs 2: the two 1-rank rungs start together (both before either is evaluated) and give the same
+# errors and steps as when they ran one after the other
+"$PYTHON" scripts/validate.py --coarsest --only oscillating-drop,dambreak-front --jobs 2 \
+  --runs "$out/runs_jobs" --report "$out/report_jobs" > "$out/jobs.log"
+first_result=$(grep -n "status [0-9]*, " "$out/jobs.log" | head -1 | cut -d: -f1)
+[ "$(grep -c " started$" "$out/jobs.log")" = 2 ] &&
+  [ "$(grep -n " started$" "$out/jobs.log" | tail -1 | cut -d: -f1)" -lt "$first_result" ] ||
+  { echo "FAIL: --jobs 2 did not start both runs before the results"; exit 1; }
+"$PYTHON" - "$out/report/results.csv" "$out/report_jobs/results.csv" <<'PY'
+import csv, sys
+rows = [{r["study"]: (r["error"], r["steps"]) for r in csv.DictReader(open(f))} for f in sys.argv[1:]]
+for study in ("oscillating-drop", "dambreak-front"):
+    assert rows[0][study] == rows[1][study], (study, rows[0][study], rows[1][study])
+PY
+echo "jobs: two rungs run at once, the same errors and steps as one after the other"
