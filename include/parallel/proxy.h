@@ -13,7 +13,7 @@ struct proxy {
   long n_cells_out;
   long *cells_out;        /* owned cells the neighbour wants in its halo, ascending */
   long n_send, n_recv;    /* particles sent / received in the current halo */
-  int *send_index;        /* owned slots sent, in (cell, id) order (the displacements of pick) */
+  int *send_index;        /* owned slots sent, in the sort's order (the displacements of pick) */
   long send_index_cap;
   long recv_first;        /* first halo slot of the received particles */
   MPI_Datatype pick[N_PART_TYPES];   /* the elements send_index of an array of each element type */
