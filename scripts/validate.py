@@ -145,14 +145,16 @@ def run_rung(study, r, out, reuse, done=DONE):
 
 def run_packed(todo, args, done=DONE):
     """Run the rungs todo [(study, rung)] that are not reusable, as many at once as their ranks fit in
-    args.jobs cores (a run with more ranks than that alone), in order; their records go to their
-    folders, where run_study reads them back."""
+    args.jobs cores (a run with more ranks than that alone): whenever cores are free, the first
+    waiting rung that fits in them starts; their records go to their folders, where run_study reads
+    them back."""
     running, queue = [], [(s, r, rung_dir(args.runs, s, r)) for s, r in todo]
     queue = [(s, r, out) for s, r, out in queue if not reusable(s, r, out, args.reuse, done)]
     while queue or running:
-        busy = sum(run.np for run in running)
-        if queue and (not running or busy + queue[0][1]["np"] <= args.jobs):
-            s, r, out = queue.pop(0)
+        free = args.jobs - sum(run.np for run in running)
+        fits = [k for k, (s, r, out) in enumerate(queue) if r["np"] <= free]
+        if queue and (fits or not running):
+            s, r, out = queue.pop(fits[0] if fits else 0)
             print("%s: %s dx = %g on %d ranks started" % (s["id"], r["label"], r["dx"], r["np"]), flush=True)
             running.append(Launched(s, r, out))
             continue
