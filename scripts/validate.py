@@ -6,8 +6,8 @@ plot (log-log, one line per scheme), plus results.csv beside it. Every number in
 measured by this run (or read back from runs of an earlier invocation with --reuse, or with --only
 kept from the report in place).
 
-Usage: scripts/validate.py [--quick] [--only ID[,ID]] [--reuse] [--runs DIR] [--report DIR]
-  --quick   the cheap rungs only (make validate QUICK=1, about 20 min on 2 cores)
+Usage: scripts/validate.py [--quick] [--only ID[,ID]] [--reuse] [--jobs N] [--runs DIR] [--report DIR]
+  --quick   the cheap rungs only (make validate QUICK=1; user guide 1.8 for its time)
   --only    these studies only, and with a report already in --report, update it: their rows of
             results.csv and their sections (with their plots) are replaced, the other studies'
             sections are kept verbatim (in STUDIES order; a new study goes in at its place) and the
@@ -121,8 +121,8 @@ class Launched:
         status = self.proc.wait()
         wall = time.time() - self.start
         self.log.close()
-        rec = {"status": status, "wall": wall, "command": " ".join(self.cmd), "steps": 0, "fluid": 0,
-               "wall_particles": 0}
+        rec = {"status": status, "wall": wall, "started": self.start, "command": " ".join(self.cmd), "steps": 0,
+               "fluid": 0, "wall_particles": 0}
         timings = os.path.join(self.out, "timings.csv")
         if os.path.exists(timings):   # the run's summary (engine_report.c), also after status 2
             value = {row["name"]: row["value"] for row in read_timings(timings)}
@@ -148,20 +148,30 @@ def run_packed(todo, args, done=DONE):
     args.jobs cores (a run with more ranks than that alone): whenever cores are free, the first
     waiting rung that fits in them starts; their records go to their folders, where run_study reads
     them back."""
-    running, queue = [], [(s, r, rung_dir(args.runs, s, r)) for s, r in todo]
-    queue = [(s, r, out) for s, r, out in queue if not reusable(s, r, out, args.reuse, done)]
-    while queue or running:
-        free = args.jobs - sum(run.np for run in running)
-        fits = [k for k, (s, r, out) in enumerate(queue) if r["np"] <= free]
-        if queue and (fits or not running):
-            s, r, out = queue.pop(fits[0] if fits else 0)
-            print("%s: %s dx = %g on %d ranks started" % (s["id"], r["label"], r["dx"], r["np"]), flush=True)
-            running.append(Launched(s, r, out))
-            continue
-        time.sleep(0.2)
-        for run in [run for run in running if run.proc.poll() is not None]:
-            run.record(done)
-            running.remove(run)
+    running, queue, folders = [], [], set()
+    for s, r in todo:   # studies that share their runs (a "runs" key) share a folder: one run each
+        out = rung_dir(args.runs, s, r)
+        if out not in folders and not reusable(s, r, out, args.reuse, done):
+            queue.append((s, r, out))
+        folders.add(out)
+    try:
+        while queue or running:
+            free = args.jobs - sum(run.np for run in running)
+            fits = [k for k, (s, r, out) in enumerate(queue) if r["np"] <= free]
+            if queue and (fits or not running):
+                s, r, out = queue.pop(fits[0] if fits else 0)
+                print("%s: %s dx = %g on %d ranks started" % (s["id"], r["label"], r["dx"], r["np"]), flush=True)
+                running.append(Launched(s, r, out))
+                continue
+            time.sleep(0.2)
+            for run in [run for run in running if run.proc.poll() is not None]:
+                run.record(done)
+                running.remove(run)
+    finally:   # an exception or a signal here stops the runs still going, as subprocess.call would
+        for run in running:
+            run.proc.terminate()
+            run.proc.wait()
+            run.log.close()
 
 
 def signal_stop(out):
@@ -397,7 +407,8 @@ def write_report(args, results, seconds):
           "README names its source and reference.", "", full_ladder_estimate(studies, table_rows), "",
           "The error is the study's metric against its reference; *verdict* compares it with the "
           "study's threshold. Wall time is that of `mpirun` including start-up; core-seconds = wall "
-          "time x ranks (this machine's ranks share 2 cores).", ""] + summary(table_rows)
+          "time x ranks (this machine's ranks share %d cores; this invocation ran up to %d cores' worth of "
+          "ranks at once, --jobs)." % (os.cpu_count(), args.jobs), ""] + summary(table_rows)
     for part in text:
         md += ["", part]
     md += ["", "## Commands", "", "Each rung's command line is in `<runs>/<study>/<rung>/validate.json`, <runs> "

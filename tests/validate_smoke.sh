@@ -9,7 +9,8 @@
 # current ones is run again (the dam-break front's rung, whose overrides hold a value with a
 # space, is read back), and a run a stop signal ended before its end is not taken as finished. And
 # --only with a report in place: only the chosen study's section and
-# rows are replaced. And --jobs 2: two 1-rank rungs run at once, with the same results.
+# rows are replaced. And --jobs 2: 1-rank rungs run two at a time, with the same results, and a
+# folder two studies share runs once.
 set -eu
 cd "$(dirname "$0")/.."
 PYTHON=${PYTHON:-/usr/bin/python3}
@@ -114,18 +115,20 @@ grep -q "run not finished: stopped by SIGTERM at step 9" "$out/stopped.log" ||
   { echo "FAIL: a signal-stopped run is not reported as unfinished"; exit 1; }
 echo "reuse: a run stopped by a signal is reported as not finished"
 
-# --jobs 2: the two 1-rank rungs start together (both before either is evaluated) and give the same
-# errors and steps as when they ran one after the other
-"$PYTHON" scripts/validate.py --coarsest --only oscillating-drop,dambreak-front --jobs 2 \
-  --runs "$out/runs_jobs" --report "$out/report_jobs" > "$out/jobs.log"
-first_result=$(grep -n "status [0-9]*, " "$out/jobs.log" | head -1 | cut -d: -f1)
-[ "$(grep -c " started$" "$out/jobs.log")" = 2 ] &&
-  [ "$(grep -n " started$" "$out/jobs.log" | tail -1 | cut -d: -f1)" -lt "$first_result" ] ||
-  { echo "FAIL: --jobs 2 did not start both runs before the results"; exit 1; }
-"$PYTHON" - "$out/report/results.csv" "$out/report_jobs/results.csv" <<'PY'
-import csv, sys
-rows = [{r["study"]: (r["error"], r["steps"]) for r in csv.DictReader(open(f))} for f in sys.argv[1:]]
-for study in ("oscillating-drop", "dambreak-front"):
+# --jobs 2: the 1-rank rungs run two at a time (the first two overlap in time, from their records)
+# and give the errors and steps of the runs made one after the other; the standing wave's two
+# studies share one folder, which runs once
+"$PYTHON" scripts/validate.py --coarsest --only oscillating-drop,dambreak-front,standing-wave-period,standing-wave-decay \
+  --jobs 2 --runs "$out/runs_jobs" --report "$out/report_jobs" > "$out/jobs.log"
+[ "$(grep -c " started$" "$out/jobs.log")" = 3 ] || { echo "FAIL: --jobs 2 did not run 3 folders once each"; exit 1; }
+"$PYTHON" - "$out/report/results.csv" "$out/report_jobs/results.csv" "$out/runs_jobs" <<'PY'
+import csv, glob, json, sys
+rows = [{r["study"]: (r["error"], r["steps"]) for r in csv.DictReader(open(f))} for f in sys.argv[1:3]]
+for study in ("oscillating-drop", "dambreak-front", "standing-wave-period"):
     assert rows[0][study] == rows[1][study], (study, rows[0][study], rows[1][study])
+assert rows[1]["standing-wave-decay"][1] == rows[1]["standing-wave-period"][1], rows[1]
+recs = sorted((json.load(open(f)) for f in glob.glob(sys.argv[3] + "/*/*/validate.json")), key=lambda r: r["started"])
+assert len(recs) == 3 and all(r["status"] == 0 for r in recs), recs
+assert recs[1]["started"] < recs[0]["started"] + recs[0]["wall"], "the first two runs did not overlap"
 PY
-echo "jobs: two rungs run at once, the same errors and steps as one after the other"
+echo "jobs: two rungs at a time, the same errors and steps as one after the other; a shared folder run once"
