@@ -93,9 +93,9 @@ static inline const uint64_t *nlist_point_next(const uint64_t *point) { return p
 void nlist_points_clear(struct nlist *l, double radius);
 
 /** Append the list of point x [m] (the mirror point of a fixed wall's ghost): a mask over the
- *  candidates of the stencil ranges r, bit b set when candidate b is not a boundary particle
- *  (KIND_BOUNDARY, base/kinds.h: the points interpolate the fluid) and lies within the build
- *  radius of x at the current positions: a header word (nlist_point_header: the first word of
+ *  candidates of the ranges r (the fluid around x, neighbour_ranges_fluid_within: the points
+ *  interpolate the fluid), bit b set when candidate b lies within the build radius of x at the
+ *  current positions: a header word (nlist_point_header: the first word of
  *  the mask kept and how many are kept, the zero words before and after left out; 0 when no bit
  *  is set), then those words. Like the particles'
  *  lists, it stays valid for the step when x is fixed (the cell skin bounds how far the

@@ -100,15 +100,11 @@ struct grid space_top_grid(const struct grid *g, long b);
 /** The particle ranges of the 3^dim cells around cell c (those present on this rank). */
 void neighbour_ranges(const struct space *s, long c, struct neighbour_ranges *r);
 
-/** neighbour_ranges without the cells whose box lies farther than radius [m] from point x [m],
- *  in the same order: the candidates within radius of x of the particles in their cells' boxes
- *  (cells assigned at the current positions) are all kept. */
-void neighbour_ranges_within(const struct space *s, long c, const double *x, double radius,
-                             struct neighbour_ranges *r);
-
-/** neighbour_ranges_within over the fluid particles of each cell only (the first cell_fluid
- *  slots of each): the candidates of a point that reads the fluid alone, without scanning the
- *  wall ghosts of the cells around it. */
+/** The ranges of the fluid of the cells around c (the first cell_fluid slots of each; the boundary
+ *  particles follow, space_sort), in neighbour_ranges' order, without the cells whose box lies
+ *  farther than radius [m] from point x [m]: the fluid within radius of x, of the particles in
+ *  their cells' boxes (cells assigned at the current positions), is all kept. For a point that
+ *  reads the fluid alone, without scanning the wall ghosts of the cells around it. */
 void neighbour_ranges_fluid_within(const struct space *s, long c, const double *x, double radius,
                                    struct neighbour_ranges *r);
 
@@ -133,8 +129,8 @@ void space_set_owner(struct space *s, const int *top_owner);
  *  outside the domain, or -1 when all are inside. */
 long space_assign_cells(const struct space *s, struct parts *p, long first, long n);
 
-/** Sort particles [first, first+n) (all in local cells) by (cell, id), with each cell's fluid
- *  before its boundary particles, by a counting sort on the local cells in global order. */
+/** Sort particles [first, first+n) (all in local cells) by cell, each cell's fluid before its
+ *  boundary particles, then by id, by a counting sort on the local cells in global order. */
 void space_sort(struct space *s, struct parts *p, long first, long n);
 
 /** Keep the owned particles whose cell this rank owns, in their order, in the first owned slots

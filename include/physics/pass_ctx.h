@@ -127,8 +127,8 @@ struct pass_out {
 };
 
 /** The context of a pass. Pointers, so that the engine's arrays and parameters are seen as they
- *  are when the pass runs; a pass writes the owned slots of p and w (pass_volumes: every slot's
- *  volume), the lists (pass_neighbour_lists; the others their read-back scratch,
+ *  are when the pass runs; a pass writes the owned slots of p and w (pass_volumes, pass_fluid_volumes,
+ *  pass_boundary_volumes: the halo slots' volumes too), the lists (pass_neighbour_lists; the others their read-back scratch,
  *  nlist_enter_cell) and out, and never talks to another rank. */
 struct pass_ctx {
   const struct case_def *c;

@@ -50,7 +50,8 @@ void pass_for_each_owned(struct pass_ctx *ctx, particle_fn fluid, particle_fn wa
 void pass_neighbour_lists(struct pass_ctx *ctx);
 
 /** Volumes m/rho of all slots (owned and halo) for the pair passes of this stage [m^dim]; runs
- *  after the halo updates of the state and the wall ghost values. */
+ *  after the halo update of the state (and, but with delta-sph, whose ghosts read it, after the
+ *  wall ghost values; with walls the other schemes split it in the two passes below). */
 void pass_volumes(struct pass_ctx *ctx);
 
 /** pass_volumes of the fluid slots alone: what the wall ghosts' Shepard sums read, before the

@@ -17,27 +17,24 @@ static void *grow(void *a, long *capacity, long needed, size_t size) {
 
 /* mark_within in `dim` dimensions (a constant where it is inlined: the axis loop unrolls). */
 static inline void mark_within_dim(const struct parts *p, const int dim, const double *x, long self,
-                                   unsigned skip_kinds, double radius2, const struct neighbour_ranges *r,
-                                   uint64_t *mask) {
+                                   double radius2, const struct neighbour_ranges *r, uint64_t *mask) {
   const double *xj[3] = {p->x[0], p->x[1], dim == 3 ? p->x[2] : NULL};
   long b = 0;
   for (int k = 0; k < r->n; k++)
     for (long j = r->start[k]; j < r->start[k] + r->count[k]; j++, b++) {
-      if (skip_kinds && part_has(p->phase[j], skip_kinds)) continue;
       double r2 = 0;
       for (int d = 0; d < dim; d++) r2 += (x[d] - xj[d][j]) * (x[d] - xj[d][j]);
       if (r2 < radius2 && j != self) mask[b / WORD_BITS] |= (uint64_t)1 << (b % WORD_BITS);
     }
 }
 
-/* Set in mask the bits of the candidates r within radius2 of point x, but slot self and the
- * candidates of the kinds skip_kinds (a constant where it is inlined, so the kind test costs one
- * marker comparison, or nothing with 0). The squared distance is summed as the pair loops sum it,
- * so a candidate is listed exactly when they find it near. */
-static inline void mark_within(const struct parts *p, const double *x, long self, unsigned skip_kinds,
-                               double radius2, const struct neighbour_ranges *r, uint64_t *mask) {
-  if (p->dim == 3) mark_within_dim(p, 3, x, self, skip_kinds, radius2, r, mask);
-  else mark_within_dim(p, 2, x, self, skip_kinds, radius2, r, mask);
+/* Set in mask the bits of the candidates r within radius2 of point x, but slot self. The squared
+ * distance is summed as the pair loops sum it, so a candidate is listed exactly when they find it
+ * near. */
+static inline void mark_within(const struct parts *p, const double *x, long self, double radius2,
+                               const struct neighbour_ranges *r, uint64_t *mask) {
+  if (p->dim == 3) mark_within_dim(p, 3, x, self, radius2, r, mask);
+  else mark_within_dim(p, 2, x, self, radius2, r, mask);
 }
 
 /* Set in mask the bits of the candidates r within the build radius of owned slot i (not i itself). */
@@ -45,7 +42,7 @@ static void mark_neighbours(const struct nlist *l, const struct parts *p, long i
                             const struct neighbour_ranges *r, uint64_t *mask) {
   double x[3] = {0, 0, 0};
   for (int d = 0; d < p->dim; d++) x[d] = p->x[d][i];
-  mark_within(p, x, i, 0, l->radius2, r, mask);
+  mark_within(p, x, i, l->radius2, r, mask);
 }
 
 /* Particles of cell c that have a neighbour list (of a KIND_LISTED kind, base/kinds.h). */
@@ -97,7 +94,7 @@ void nlist_point_add(struct nlist *l, const struct parts *p, const double *x, co
   l->point_bits = grow(l->point_bits, &l->point_capacity, first + 1 + words, sizeof(uint64_t));
   uint64_t *mask = l->point_bits + first + 1;
   if (words > 0) memset(mask, 0, words * sizeof(uint64_t));
-  mark_within(p, x, -1, KIND_BOUNDARY, l->radius2, r, mask);
+  mark_within(p, x, -1, l->radius2, r, mask);
   for (hi = words; hi > 0 && !mask[hi - 1]; hi--) continue;
   while (lo < hi && !mask[lo]) lo++;
   if (lo > 0) memmove(mask, mask + lo, (size_t)(hi - lo) * sizeof(uint64_t));

@@ -1,5 +1,5 @@
 /* space.c — the two-level cell space: top cells and their owners, the fine-cell index over the
- * local top cells, particle sorting by (cell, id). */
+ * local top cells, particle sorting by cell (each cell's fluid first) and id. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -268,7 +268,7 @@ void space_index(struct space *s, const struct parts *p) {
   }
 }
 
-/* Relative margin on the squared radius of neighbour_ranges_within: far above the rounding of a
+/* Relative margin on the squared radius of neighbour_ranges_fluid_within: far above the rounding of a
  * cell's bounds and of the cell assignment, so no particle within the radius is left out. */
 #define RANGE_CULL_MARGIN 1e-9
 
@@ -311,11 +311,6 @@ static void ranges_around(const struct space *s, long c, const double *x, double
 
 void neighbour_ranges(const struct space *s, long c, struct neighbour_ranges *r) {
   ranges_around(s, c, NULL, 0, s->cell_count, r);
-}
-
-void neighbour_ranges_within(const struct space *s, long c, const double *x, double radius,
-                             struct neighbour_ranges *r) {
-  ranges_around(s, c, x, radius * radius * (1 + RANGE_CULL_MARGIN), s->cell_count, r);
 }
 
 void neighbour_ranges_fluid_within(const struct space *s, long c, const double *x, double radius,

@@ -79,21 +79,18 @@ static inline __attribute__((always_inline)) int gradients_of(struct pass_ctx *c
   return fallback;
 }
 
-void pass_volumes(struct pass_ctx *ctx) {
-  const struct parts *p = ctx->p;
-  for (long i = 0, n = p->n_owned + p->n_halo; i < n; i++) ctx->w->vol[i] = p->m[i] / p->rho[i];
-}
-
-/* The volumes m/rho of the slots whose boundary flag (KIND_BOUNDARY) is `boundary`. */
-static void volumes_of(struct pass_ctx *ctx, int boundary) {
+/* The volumes m/rho of the owned and halo slots of the kinds `kinds` (KIND_* set bits, 0: all). */
+static void volumes_of(struct pass_ctx *ctx, unsigned kinds) {
   const struct parts *p = ctx->p;
   for (long i = 0, n = p->n_owned + p->n_halo; i < n; i++)
-    if (part_has(p->phase[i], KIND_BOUNDARY) == boundary) ctx->w->vol[i] = p->m[i] / p->rho[i];
+    if (!kinds || ((kinds >> kind_of(p->phase[i])) & 1u)) ctx->w->vol[i] = p->m[i] / p->rho[i];
 }
 
-void pass_fluid_volumes(struct pass_ctx *ctx) { volumes_of(ctx, 0); }
+void pass_volumes(struct pass_ctx *ctx) { volumes_of(ctx, 0); }
 
-void pass_boundary_volumes(struct pass_ctx *ctx) { volumes_of(ctx, 1); }
+void pass_fluid_volumes(struct pass_ctx *ctx) { volumes_of(ctx, 1u << KIND_FLUID); }
+
+void pass_boundary_volumes(struct pass_ctx *ctx) { volumes_of(ctx, KINDS_WITH(KIND_BOUNDARY)); }
 
 /* Zero the gradient-pass results of a wall ghost. */
 static void clear_ghost(struct pass_ctx *ctx, long i, const struct neighbours *nb) {

@@ -52,16 +52,11 @@ static inline __attribute__((always_inline)) void add_values(double *a, const st
   for (int d = 0; d < dim; d++) a[SHEPARD_U + d] += wv * p->v[d][j];
 }
 
-/* The fluid of the cells around point xs within the kernel support (the boundary particles of
- * each cell follow its fluid, space_sort). */
+/* The fluid of the cells around point xs (the boundary particles of each cell follow its fluid,
+ * space_sort) without the cells farther than the list radius: the cell skin covers the fluid's
+ * motion within a step, so no fluid within the kernel support is left out at any stage; the same
+ * ranges at a list's build and at every stage of the step (the cells do not change within it). */
 static void fluid_ranges_at(const struct pass_ctx *ctx, const double *xs, struct neighbour_ranges *r) {
-  neighbour_ranges_fluid_within(ctx->space, grid_cell_clamped(&ctx->space->grid, xs), xs, ctx->prm->kern.support, r);
-}
-
-/* The ranges of a fixed mirror point's list: the fluid of the stencil of xs's cell without the
- * cells farther than the list radius, the same at the list's build and at every stage of the step
- * (the cells do not change within it). */
-static void list_ranges_at(const struct pass_ctx *ctx, const double *xs, struct neighbour_ranges *r) {
   neighbour_ranges_fluid_within(ctx->space, grid_cell_clamped(&ctx->space->grid, xs), xs, ctx->prm->list_radius,
                                 r);
 }
@@ -87,7 +82,7 @@ long visit_near(const struct pass_ctx *ctx, const double *xs, int with_walls, ne
 }
 
 /* The candidates of a mirror point's list (nlist_point_add: a header word, then the kept words
- * of a mask over the stencil of the point's cell), in stencil order. */
+ * of a mask over the fluid ranges of fluid_ranges_at), in stencil order. */
 struct listed {
   const uint64_t *point;      /* the list */
   int words, first, w, k;     /* kept words, the first one's number, the word and range now */
@@ -104,7 +99,7 @@ static inline void listed_start(struct listed *it, const struct pass_ctx *ctx, c
   it->w = it->k = 0;
   it->range_first = 0;
   it->bits = it->words ? point[1] : 0;
-  if (it->words) list_ranges_at(ctx, xs, &it->r);
+  if (it->words) fluid_ranges_at(ctx, xs, &it->r);
 }
 
 /* The next listed candidate's slot into *j; 0 when none is left. */
@@ -120,7 +115,8 @@ static inline int listed_next(struct listed *it, long *j) {
   return 1;
 }
 
-/* visit_near without walls, over the listed candidates of xs: the same calls in the same order. */
+/* visit_near without walls, over the listed candidates of xs: the same candidates in the same
+ * order, with the weights from this stage's volumes (visit_near divides m/rho). */
 static long visit_listed(const struct pass_ctx *ctx, const double *xs, const uint64_t *point, near_fn fn,
                          void *arg) {
   struct listed it;
@@ -267,7 +263,7 @@ void pass_wall_ghost_lists(struct pass_ctx *ctx) {
     double xs[3];
     struct neighbour_ranges r;
     wall_mirror_point(ctx, k, xs);
-    list_ranges_at(ctx, xs, &r);
+    fluid_ranges_at(ctx, xs, &r);
     nlist_point_add(ctx->nl, ctx->p, xs, &r);
   }
 }
