@@ -61,24 +61,21 @@ static void fluid_ranges_at(const struct pass_ctx *ctx, const double *xs, struct
                                 r);
 }
 
-/* Call fn for every particle of the ranges r (but the boundary particles unless with_walls) within
- * the kernel support of xs, weights as near_weight's; returns the number of calls. */
+/* Call fn for every particle of the ranges r within the kernel support of xs, weights as
+ * near_weight's; returns the number of calls. */
 static long visit_ranges(const struct pass_ctx *ctx, const double *xs, const struct neighbour_ranges *r,
-                         int with_walls, const double *vol, near_fn fn, void *arg) {
+                         const double *vol, near_fn fn, void *arg) {
   long n = 0;
   for (int k = 0; k < r->n; k++)
-    for (long j = r->start[k]; j < r->start[k] + r->count[k]; j++) {
-      if (part_has(ctx->p->phase[j], KIND_BOUNDARY) && !with_walls) continue;
-      n += visit_if_near(ctx, xs, j, vol, fn, arg);
-    }
+    for (long j = r->start[k]; j < r->start[k] + r->count[k]; j++) n += visit_if_near(ctx, xs, j, vol, fn, arg);
   return n;
 }
 
 long visit_near(const struct pass_ctx *ctx, const double *xs, int with_walls, near_fn fn, void *arg) {
   struct neighbour_ranges r;
   if (with_walls) neighbour_ranges(ctx->space, grid_cell_clamped(&ctx->space->grid, xs), &r);
-  else fluid_ranges_at(ctx, xs, &r);
-  return visit_ranges(ctx, xs, &r, with_walls, NULL, fn, arg);
+  else fluid_ranges_at(ctx, xs, &r);   /* the fluid alone: no boundary particle to skip */
+  return visit_ranges(ctx, xs, &r, NULL, fn, arg);
 }
 
 /* The candidates of a mirror point's list (nlist_point_add: a header word, then the kept words
@@ -177,7 +174,7 @@ static void shepard_at(const struct pass_ctx *ctx, const double *xs, struct shep
   struct neighbour_ranges r;
   shepard_clear(ctx, s);
   fluid_ranges_at(ctx, xs, &r);
-  *pairs += visit_ranges(ctx, xs, &r, 0, ctx->w->vol, add_shepard, s);
+  *pairs += visit_ranges(ctx, xs, &r, ctx->w->vol, add_shepard, s);
 }
 
 static int majority_phase(const struct pass_ctx *ctx, const struct shepard *s) {
