@@ -2,7 +2,7 @@
 # Clusters: make MPICC=mpicc HDF5_DIR=/opt/hdf5 METIS_DIR=/opt/metis [YAML_DIR=...]
 
 MPICC  ?= mpicc
-ARCH   ?= portable
+ARCH   ?= native
 PYTHON ?= $(shell test -x /usr/bin/python3 && echo /usr/bin/python3 || echo python3)
 MPIRUN ?= scripts/mpirun
 NP     ?= 2
@@ -29,6 +29,10 @@ else
   YAML_LIBS   := $(shell pkg-config --libs yaml-0.1 2>/dev/null || echo -lyaml)
 endif
 
+# native (the default): this machine's widest vector units, which the pair loops' kernel evaluation
+# uses (include/physics/pair_chunk.h); portable: any x86-64, for a binary shared by unlike nodes.
+# -std=c11 keeps floating-point contraction off in both, so a binary gives the same results on any
+# rank count; two builds for different machines may differ by rounding.
 OPT_portable := -O2 -ftree-vectorize
 OPT_native   := -O3 -march=native
 VERSION := $(shell git describe --always --dirty 2>/dev/null || echo unknown)
@@ -41,6 +45,13 @@ BASE_CFLAGS := -std=c11 -D_POSIX_C_SOURCE=200809L -Wall -Wextra -Werror -Iinclud
            -DMPSPH_VERSION='"$(VERSION)"' $(HDF5_CFLAGS) $(METIS_CFLAGS) $(YAML_CFLAGS)
 CFLAGS  += $(BASE_CFLAGS)
 LDLIBS  := $(HDF5_LIBS) $(METIS_LIBS) $(YAML_LIBS) -lm
+# The compiler flags of the objects in build/ (the version string aside): rewritten when they
+# change (another ARCH, CFLAGS), so that every object is compiled again with the new ones.
+FLAGS_STAMP := build/cflags.txt
+FLAGS_NOW   := $(MPICC) $(filter-out -DMPSPH_VERSION=%,$(CFLAGS))
+ifneq ($(FLAGS_NOW),$(shell cat $(FLAGS_STAMP) 2>/dev/null))
+  $(shell mkdir -p build && echo '$(FLAGS_NOW)' > $(FLAGS_STAMP))
+endif
 
 # The case loader and what `check` runs of it, without MPI: the fuzz target and its replay.
 FUZZ_SRC := $(addprefix src/,case/case_load.c case/yaml_tree.c case/init.c case/geometry.c case/motion.c \
@@ -68,7 +79,7 @@ asan: build/asan/mpsph
 deps:
 	@scripts/install-deps
 
-build/obj/%.o: src/%.c $(HDR)
+build/obj/%.o: src/%.c $(HDR) $(FLAGS_STAMP)
 	@echo "CC $<"
 	@mkdir -p $(@D)
 	@$(MPICC) $(CFLAGS) -c $< -o $@
@@ -89,7 +100,7 @@ build/asan/mpsph: $(ASAN_OBJ)
 	@echo "LD $@"
 	@$(MPICC) $(ASAN_CFLAGS) $^ -o $@ $(LDLIBS)
 
-build/tests/%: tests/%.c tests/check.h tests/engine_test.h build/libmpsph.a | build/tests
+build/tests/%: tests/%.c tests/check.h tests/engine_test.h build/libmpsph.a $(FLAGS_STAMP) | build/tests
 	@echo "LD $@"
 	@$(MPICC) $(CFLAGS) -Itests $< build/libmpsph.a -o $@ $(LDLIBS)
 
@@ -145,13 +156,13 @@ run: deps
 # DUALSPHYSICS=BIN adds the peer comparison of issue 23 (scripts/bench_peer.py) with that
 # DualSPHysics CPU binary; DUALSPHYSICS_SRC=DIR its source tree if not three levels above BIN.
 BENCH_TOOLS := build/bench/peak_fma build/bench/bench_hdf5
-build/bench/peak_fma: scripts/bench/peak_fma.c | build/bench
-	@$(MPICC) $(CFLAGS) $< -o $@
+build/bench/peak_fma: scripts/bench/peak_fma.c $(FLAGS_STAMP) | build/bench
+	@$(MPICC) $(CFLAGS) -ffp-contract=fast $< -o $@
 build/bench/bench_hdf5: scripts/bench/bench_hdf5.c build/libmpsph.a | build/bench
 	@$(MPICC) $(CFLAGS) $< build/libmpsph.a -o $@ $(LDLIBS)
 build/bench:
 	mkdir -p $@
-build/bench/mpsph-single-phase: $(SRC) $(HDR) | build/bench
+build/bench/mpsph-single-phase: $(SRC) $(HDR) $(FLAGS_STAMP) | build/bench
 	@echo "LD $@ (SINGLE_PHASE)"
 	@$(MPICC) $(filter-out -DMPSPH_SINGLE_PHASE,$(CFLAGS)) -DMPSPH_SINGLE_PHASE $(SRC) -o $@ $(LDLIBS)
 build/tests/test_no_alloc: tests/test_no_alloc.c tests/check.h tests/engine_test.h build/libmpsph.a | build/tests

@@ -235,8 +235,11 @@ def machine():
                 break
     commit = sh(["git", "describe", "--always", "--dirty"]).strip()
     cc = sh(["mpicc", "--version"]).splitlines()[0]
+    with open("build/cflags.txt") as f:   # the flags the Makefile built the binaries with
+        flags = f.read().split()
+    flags = " ".join(a for a in flags[1:] if a.startswith(("-O", "-m", "-f", "-g", "-D")))
     return {"cpu": model, "cores": os.cpu_count(), "load_start": os.getloadavg(), "commit": commit,
-            "compiler": cc, "date": time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime())}
+            "compiler": cc, "flags": flags, "date": time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime())}
 
 
 class Bench:

@@ -78,7 +78,8 @@ class Report:
                "| load average (1/5/15 min) at start | %.2f / %.2f / %.2f |" % m["load_start"],
                "| load average at end | %.2f / %.2f / %.2f |" % m["load_end"],
                "| commit | `%s` |" % m["commit"],
-               "| compiler | %s, default portable flags `-O2 -ftree-vectorize -g` |" % m["compiler"],
+               "| compiler | %s, flags `%s` (`-std=c11`: no floating-point contraction) |"
+               % (m["compiler"], m.get("flags", "-O2 -ftree-vectorize -g")),
                "| date | %s |" % m["date"],
                "| run time of the whole suite | %.1f min |" % (m["seconds"] / 60)]
         self.md += ["| groups run again: %s | commit `%s`, %s, load %.2f / %.2f / %.2f at start, %.2f / %.2f / %.2f at end, %.1f min |"
@@ -163,10 +164,11 @@ class Report:
     def flops(self):
         self.w("## 3. Floating-point rate of the main pass", "",
                "Peak: `build/bench/peak_fma` (scripts/bench/peak_fma.c), 32 independent multiply-add "
-               "accumulators compiled with the solver's flags, best rate of repeated sweeps, run at the "
-               "start and the end of the suite: %s Gflop/s (the larger is used). With the portable flags "
-               "(x86-64 baseline, SSE2, `-std=c11` so no contraction) this is the SSE2 multiply + add "
-               "peak of one core, not the AVX2 FMA peak an `ARCH=native` build could reach."
+               "accumulators compiled with the solver's flags and `-ffp-contract=fast`, best rate of "
+               "repeated sweeps, run at the start and the end of the suite: %s Gflop/s (the larger is "
+               "used). With the default flags (`ARCH=native`) this is the fused multiply-add peak of one "
+               "core in the machine's widest vectors, which the solver itself (no contraction, to keep "
+               "its rounding fixed) cannot reach in full: its multiply and add are two instructions."
                % " and ".join("%.3g" % (p / 1e9) for p in self.peaks), "",
                "Flops of the main pass (`%s`): counted by hand from the source of `fluid_sums` in "
                "src/physics/pass_fluid_rhs.c (perf's hardware counters are not available on this virtual "
@@ -494,13 +496,13 @@ class Report:
                ", ".join("%s %.0f %%" % (n, 100 * v) for n, v in top), "",
                "The main pass runs at %.1f %% of the measured peak (target 25 %%, %s). What bounds it, "
                "from the source (no hardware counters on this machine, so this is reasoning, not a "
-               "measurement): every pair gathers its neighbour's fields through the index list (x, v, "
-               "rho, p, V, grad rho, du: up to 12 scattered loads per pair), the inner loop has "
-               "data-dependent branches (support test, pair relation, wall/other-phase skips) that keep "
-               "it scalar, and each pair pays one exp() (21 flops in a dependent chain) and one "
-               "division. The pass is latency and gather bound rather than bound by the multiply-add "
-               "units; the measured peak itself is SSE2 (2 doubles per instruction) in the portable "
-               "build." % (100 * self.main_frac, "met" if self.main_frac >= TARGET_PEAK else "missed"), "")
+               "measurement): the separations, the support test and the kernel (its exp()) run in SIMD "
+               "lanes over each mask word's 64 candidates (include/physics/pair_chunk.h), but the pair "
+               "terms after them stay scalar: each pair gathers its neighbour's fields through the index "
+               "list (v, rho, p, grad rho, du: up to 10 scattered loads per pair), branches on the pair "
+               "relation (wall, other phase) and pays one division, and the sums are added in list order "
+               "(so that the results do not depend on the vector width). The pass is latency and gather "
+               "bound rather than bound by the multiply-add units." % (100 * self.main_frac, "met" if self.main_frac >= TARGET_PEAK else "missed"), "")
         if k > 1:
             self.w("Bringing the main pass to the 25 %% target (%.2fx faster) would make the whole step "
                    "%.2fx faster at this size (Amdahl, with its measured %.0f %% share)." % (k, gain, 100 * s), "")

@@ -50,18 +50,37 @@ static inline double kernel_exp(double x) {
   return poly * kernel_exp2_table[k & 31] * scale.d;
 }
 
-/** W(r) for r^2 = r2 < support^2 [1/m^dim]. */
-static inline double kernel_w(const struct kernel *k, double r2) {
-  if (k->kind == KERNEL_GAUSSIAN) return k->norm * (kernel_exp(-r2 * k->inv_h2) - k->c0);
+/** W(r) of the Gaussian for r^2 = r2 < support^2 [1/m^dim]. */
+static inline double kernel_w_gaussian(const struct kernel *k, double r2) {
+  return k->norm * (kernel_exp(-r2 * k->inv_h2) - k->c0);
+}
+
+/** W(r) of the Wendland C2 kernel for r^2 = r2 < support^2 [1/m^dim]. */
+static inline double kernel_w_wendland(const struct kernel *k, double r2) {
   double q = sqrt(r2 * k->inv_h2), a = 1.0 - 0.5 * q;
   return k->norm * a * a * a * a * (2.0 * q + 1.0);
 }
 
-/** F(r) = W'(r)/r for r^2 = r2 < support^2, so that grad_i W_ij = F (r_i - r_j) [1/m^(dim+2)]. */
-static inline double kernel_f(const struct kernel *k, double r2) {
-  if (k->kind == KERNEL_GAUSSIAN) return -2.0 * k->inv_h2 * k->norm * kernel_exp(-r2 * k->inv_h2);
+/** W(r) of kernel k's kind for r^2 = r2 < support^2 [1/m^dim]. */
+static inline double kernel_w(const struct kernel *k, double r2) {
+  return k->kind == KERNEL_GAUSSIAN ? kernel_w_gaussian(k, r2) : kernel_w_wendland(k, r2);
+}
+
+/** F(r) = W'(r)/r of the Gaussian for r^2 = r2 < support^2, so that grad_i W_ij = F (r_i - r_j)
+ *  [1/m^(dim+2)]. */
+static inline double kernel_f_gaussian(const struct kernel *k, double r2) {
+  return -2.0 * k->inv_h2 * k->norm * kernel_exp(-r2 * k->inv_h2);
+}
+
+/** kernel_f of the Wendland C2 kernel. */
+static inline double kernel_f_wendland(const struct kernel *k, double r2) {
   double q = sqrt(r2 * k->inv_h2), a = 1.0 - 0.5 * q;
   return -5.0 * k->inv_h2 * k->norm * a * a * a;
+}
+
+/** F(r) of kernel k's kind. */
+static inline double kernel_f(const struct kernel *k, double r2) {
+  return k->kind == KERNEL_GAUSSIAN ? kernel_f_gaussian(k, r2) : kernel_f_wendland(k, r2);
 }
 
 #endif

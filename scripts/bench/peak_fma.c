@@ -1,7 +1,8 @@
 /* peak_fma.c — one core's double-precision multiply-add throughput [flop/s], for the benchmark
  * report's "fraction of peak". 32 independent accumulators a = a*b + c (two flops each), a loop
- * the compiler vectorises with the same flags as the solver (the portable build has no FMA
- * instruction, so it measures multiply + add; ARCH=native contracts them into FMAs).
+ * the compiler vectorises with the solver's flags and -ffp-contract=fast (the Makefile), so that
+ * with ARCH=native it measures fused multiply-adds in the widest vectors (the portable build has
+ * no FMA instruction: there it measures multiply + add).
  * Usage: peak_fma [SECONDS]   prints "peak_flops <flop/s>", the best of several repeats. */
 #include <stdio.h>
 #include <stdlib.h>

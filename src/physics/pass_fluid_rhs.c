@@ -18,6 +18,7 @@
  * the same sums over the ghosts of each body alone (pressure pairs symmetric) give the body loads. */
 #include <math.h>
 #include "physics/interface.h"
+#include "physics/pair_chunk.h"
 #include "physics/passes.h"
 
 /* Per-particle quantities of i that are constant over its neighbours. */
@@ -71,7 +72,7 @@ static inline __attribute__((always_inline)) void fluid_sums(const struct pass_c
   const int *restrict phase = p->phase;
   const long i = ci->i;
   const int ph = ci->phase;
-  const double pi = pres[i], rhoi = rho[i], eta2 = 0.01 * ctx->prm->h * ctx->prm->h, support2 = ctx->prm->kern.support2;
+  const double pi = pres[i], rhoi = rho[i], eta2 = 0.01 * ctx->prm->h * ctx->prm->h;
   const double p_sign = ci->p_sign;
   const int visc = DISS & 1, diff = DISS & 2;
   const int weighted = PHASES && ctx->c->interface_pressure == IFACE_P_DENSITY_WEIGHTED;
@@ -87,65 +88,65 @@ static inline __attribute__((always_inline)) void fluid_sums(const struct pass_c
   struct fluid_sums s = {0};
   long n_pairs = 0;
   struct neighbours it = *nb;
-  for (long j; neighbours_next(&it, &j);) {
-    if (BODY_WALL >= 0 && !(part_has(phase[j], KIND_BOUNDARY) && p->wall[j] == BODY_WALL)) continue;
-    double dx[3], dv[3], r2 = 0, dvdx = 0;
-    for (int d = 0; d < dim; d++) {
-      dx[d] = xi[d] - x[d][j];
-      dv[d] = v[d][j] - vi[d];
-      r2 += dx[d] * dx[d];
-      dvdx += dv[d] * dx[d];
-    }
-    if (r2 >= support2) continue;
-    n_pairs++;
-    const double fv = kernel_f(&ctx->prm->kern, r2) * vol[j];
-    const int rel = part_has(phase[j], KIND_BOUNDARY) ? PAIR_WALL
-                    : (!PHASES || phase[j] == ph)      ? PAIR_SAME
-                                                       : PAIR_OTHER;
-    /* other phase: a fluid particle of another phase, or a ghost standing for one (rho0 of
-     * another phase), so that fluid and ghost neighbours of a phase act alike */
-    const int other = weighted && (rel == PAIR_OTHER || (rel == PAIR_WALL && rho[j] != rho0i));
-    double pj = other ? other_phase_pressure(pi, rhoi, pres[j], rho[j]) : pres[j];
-    double psum = pj + p_sign * pi;
-    for (int d = 0; d < dim; d++) s.grad_p[d] += psum * fv * dx[d];
-    if (DU) {
-      const struct interface_weights *iw = &ctx->prm->iface[rel];
-      double cii, cj, dui_g = 0, duj_g = 0;
-      interface_continuity_coefficients(iw, rhoi, rho[j], &cii, &cj);
+  struct pair_chunk c;
+  while (pair_chunk_next(&it, &ctx->prm->kern, x, vol, xi, dim, CHUNK_F, &c))
+    for (int k = 0; k < c.n; k++) {
+      const long j = c.j[k];
+      if (BODY_WALL >= 0 && !(part_has(phase[j], KIND_BOUNDARY) && p->wall[j] == BODY_WALL)) continue;
+      const double fv = c.fv[k], r2 = c.r2[k];
+      double dx[3], dvdx = 0;
       for (int d = 0; d < dim; d++) {
-        dui_g += dui[d] * dx[d] * fv;
-        duj_g += du[d][j] * dx[d] * fv;
+        dx[d] = c.dx[d][k];
+        dvdx += (v[d][j] - vi[d]) * dx[d];
       }
-      s.drho_du += cj * duj_g + cii * dui_g;
-      if (iw->kappa != 0)
-        for (int d = 0; d < dim; d++)
-          s.mom_du[d] += iw->kappa * (rhoi * vi[d] * dui_g + rho[j] * v[d][j] * duj_g);
-    }
-    if (DAMP == 1 && (damp_other || rel != PAIR_OTHER)) {   /* symmetric forms, D~ = 0 outside the phase */
-      double dsum = (rel == PAIR_SAME ? div[j] : 0.0) + div[i];
-      for (int d = 0; d < dim; d++) s.damper[d] += dsum * fv * dx[d];
-    }
-    if (PHASES == 2 && rel == PAIR_OTHER)
-      for (int d = 0; d < dim; d++) s.sharp[d] -= (fabs(pi) + fabs(pres[j])) * fv * dx[d];
-    if (PHASES && rel == PAIR_OTHER) {
-      if (visc_other) {   /* mu_ij pi_ij is symmetric in i and j, so the pair's forces cancel */
-        const double mu_ij = harmonic_mean(mui, ctx->c->phases[phase[j]].viscosity), pi_ij = -dvdx / (r2 + eta2);
-        for (int d = 0; d < dim; d++) s.visc_other[d] += mu_ij * pi_ij * fv * dx[d];
+      n_pairs++;
+      const int rel = part_has(phase[j], KIND_BOUNDARY) ? PAIR_WALL
+                      : (!PHASES || phase[j] == ph)      ? PAIR_SAME
+                                                         : PAIR_OTHER;
+      /* other phase: a fluid particle of another phase, or a ghost standing for one (rho0 of
+       * another phase), so that fluid and ghost neighbours of a phase act alike */
+      const int other = weighted && (rel == PAIR_OTHER || (rel == PAIR_WALL && rho[j] != rho0i));
+      double pj = other ? other_phase_pressure(pi, rhoi, pres[j], rho[j]) : pres[j];
+      double psum = pj + p_sign * pi;
+      for (int d = 0; d < dim; d++) s.grad_p[d] += psum * fv * dx[d];
+      if (DU) {
+        const struct interface_weights *iw = &ctx->prm->iface[rel];
+        double cii, cj, dui_g = 0, duj_g = 0;
+        interface_continuity_coefficients(iw, rhoi, rho[j], &cii, &cj);
+        for (int d = 0; d < dim; d++) {
+          dui_g += dui[d] * dx[d] * fv;
+          duj_g += du[d][j] * dx[d] * fv;
+        }
+        s.drho_du += cj * duj_g + cii * dui_g;
+        if (iw->kappa != 0)
+          for (int d = 0; d < dim; d++)
+            s.mom_du[d] += iw->kappa * (rhoi * vi[d] * dui_g + rho[j] * v[d][j] * duj_g);
       }
-      continue;
+      if (DAMP == 1 && (damp_other || rel != PAIR_OTHER)) {   /* symmetric forms, D~ = 0 outside the phase */
+        double dsum = (rel == PAIR_SAME ? div[j] : 0.0) + div[i];
+        for (int d = 0; d < dim; d++) s.damper[d] += dsum * fv * dx[d];
+      }
+      if (PHASES == 2 && rel == PAIR_OTHER)
+        for (int d = 0; d < dim; d++) s.sharp[d] -= (fabs(pi) + fabs(pres[j])) * fv * dx[d];
+      if (PHASES && rel == PAIR_OTHER) {
+        if (visc_other) {   /* mu_ij pi_ij is symmetric in i and j, so the pair's forces cancel */
+          const double mu_ij = harmonic_mean(mui, ctx->c->phases[phase[j]].viscosity), pi_ij = -dvdx / (r2 + eta2);
+          for (int d = 0; d < dim; d++) s.visc_other[d] += mu_ij * pi_ij * fv * dx[d];
+        }
+        continue;
+      }
+      if (visc) {
+        const double pi_ij = -dvdx / (r2 + eta2);   /* u_ji . r_ji / (r^2 + 0.01 h^2), r_ji = -dx */
+        for (int d = 0; d < dim; d++) s.visc[d] += pi_ij * fv * dx[d];
+      }
+      if (rel == PAIR_WALL) continue;
+      if (DAMP == 2)
+        for (int d = 0; d < dim; d++) s.damper[d] += (div[j] - div[i]) * fv * dx[d];
+      if (!diff) continue;
+      double gsum = 0;
+      for (int d = 0; d < dim; d++) gsum -= (gri[d] + grad_rho[d][j]) * dx[d];
+      s.diff -= (2.0 * (rho_d[j] - rho_d[i]) - gsum) * fv;
     }
-    if (visc) {
-      const double pi_ij = -dvdx / (r2 + eta2);   /* u_ji . r_ji / (r^2 + 0.01 h^2), r_ji = -dx */
-      for (int d = 0; d < dim; d++) s.visc[d] += pi_ij * fv * dx[d];
-    }
-    if (rel == PAIR_WALL) continue;
-    if (DAMP == 2)
-      for (int d = 0; d < dim; d++) s.damper[d] += (div[j] - div[i]) * fv * dx[d];
-    if (!diff) continue;
-    double gsum = 0;
-    for (int d = 0; d < dim; d++) gsum -= (gri[d] + grad_rho[d][j]) * dx[d];
-    s.diff -= (2.0 * (rho_d[j] - rho_d[i]) - gsum) * fv;
-  }
   *out = s;
   *pairs += n_pairs;
 }

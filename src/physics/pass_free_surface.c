@@ -10,30 +10,40 @@
  * The free-surface region is the detected particles plus those within surface_band h of one. */
 #include <math.h>
 #include "physics/linalg.h"
+#include "physics/pair_chunk.h"
 #include "physics/passes.h"
 
 #define LAMBDA_SURFACE 0.2
 #define LAMBDA_INTERIOR 0.75
 #define SINGULAR_DET 1e-3   /* det(B) below which the normal is -sum grad W itself */
 
-/* B matrix and sum of kernel gradients of particle i over all neighbours. */
-static void moments(const struct pass_ctx *ctx, long i, const struct neighbours *nb, double *mt,
-                    double *sum_gw, long *pairs) {
-  const struct parts *p = ctx->p;
-  const int dim = p->dim;
+/* B matrix and sum of kernel gradients of particle i over all neighbours, in `dim` dimensions (a
+ * literal where inlined). */
+static inline __attribute__((always_inline)) void moments_dim(const struct pass_ctx *ctx, long i,
+                                                              const struct neighbours *nb, double *mt,
+                                                              double *sum_gw, long *pairs, const int dim) {
+  const double *restrict x[3] = {ctx->p->x[0], ctx->p->x[1], ctx->p->x[2]};
+  double xi[3];
+  for (int d = 0; d < dim; d++) xi[d] = x[d][i];
   for (int k = 0; k < 9; k++) mt[k] = 0;
   for (int d = 0; d < 3; d++) sum_gw[d] = 0;
   struct neighbours it = *nb;
-  for (long j; neighbours_next(&it, &j);) {
-    double dx[3], r2 = pair_separation(p, dim, i, j, dx);
-    if (r2 >= ctx->prm->kern.support2) continue;
-    double fv = kernel_f(&ctx->prm->kern, r2) * ctx->w->vol[j];
-    for (int a = 0; a < dim; a++) {
-      sum_gw[a] += fv * dx[a];
-      for (int b = 0; b < dim; b++) mt[a * dim + b] -= fv * dx[a] * dx[b];
-    }
-    (*pairs)++;
+  struct pair_chunk c;
+  while (pair_chunk_next(&it, &ctx->prm->kern, x, ctx->w->vol, xi, dim, CHUNK_F, &c)) {
+    for (int k = 0; k < c.n; k++)
+      for (int a = 0; a < dim; a++) {
+        sum_gw[a] += c.fv[k] * c.dx[a][k];
+        for (int b = 0; b < dim; b++) mt[a * dim + b] -= c.fv[k] * c.dx[a][k] * c.dx[b][k];
+      }
+    *pairs += c.n;
   }
+}
+
+/* moments_dim in the particles' dimension. */
+static void moments(const struct pass_ctx *ctx, long i, const struct neighbours *nb, double *mt,
+                    double *sum_gw, long *pairs) {
+  if (ctx->p->dim == 3) moments_dim(ctx, i, nb, mt, sum_gw, pairs, 3);
+  else moments_dim(ctx, i, nb, mt, sum_gw, pairs, 2);
 }
 
 /* Outward unit normal -B^-1 sum grad W (or -sum grad W where B is singular); 0 if undefined. */

@@ -12,6 +12,7 @@
  *  - with shifting, sum_j grad_i W_ij V_j over all neighbours, turned into du (shifting.c). */
 #include <math.h>
 #include "physics/linalg.h"
+#include "physics/pair_chunk.h"
 #include "physics/passes.h"
 
 #define RENORM_MIN_DET 0.1   /* det of the matrix below which L falls back to the identity */
@@ -31,7 +32,7 @@ static inline __attribute__((always_inline)) int gradients_of(struct pass_ctx *c
   const double *restrict vol = ctx->w->vol, *restrict rho = diffused_density(ctx);
   const int *restrict phase = p->phase;
   const int ph = phase[i];
-  const double support2 = ctx->prm->kern.support2, rhoi = rho[i], *restrict rho_state = p->rho;
+  const double rhoi = rho[i], *restrict rho_state = p->rho;
   const int weighted = multi && ctx->c->interface_pressure == IFACE_P_DENSITY_WEIGHTED;
   double *restrict div_own = ctx->w->div_own;   /* NULL unless the own-phase damper is on */
   const int own = multi == 2;                    /* then div_own is summed */
@@ -42,30 +43,31 @@ static inline __attribute__((always_inline)) int gradients_of(struct pass_ctx *c
   }
   int n_nb = 0;
   struct neighbours it = *nb;
-  for (long j; neighbours_next(&it, &j);) {
-    double dx[3], r2 = 0, dvdx = 0;
-    for (int d = 0; d < dim; d++) {
-      dx[d] = xi[d] - x[d][j];
-      r2 += dx[d] * dx[d];
-      dvdx += (v[d][j] - vi[d]) * dx[d];
+  struct pair_chunk c;
+  while (pair_chunk_next(&it, &ctx->prm->kern, x, vol, xi, dim, CHUNK_F, &c))
+    for (int k = 0; k < c.n; k++) {
+      const long j = c.j[k];
+      const double fv = c.fv[k];
+      double dx[3], dvdx = 0;
+      for (int d = 0; d < dim; d++) {
+        dx[d] = c.dx[d][k];
+        dvdx += (v[d][j] - vi[d]) * dx[d];
+      }
+      if (weighted && phase[j] != ph && !part_has(phase[j], KIND_BOUNDARY))
+        div += fv * dvdx * 2.0 * rho_state[j] / (rho_state[i] + rho_state[j]);
+      else
+        div += fv * dvdx;
+      if (own && (phase[j] == ph || part_has(phase[j], KIND_BOUNDARY))) div_ph += fv * dvdx;
+      n_nb++;
+      if (shift)
+        for (int d = 0; d < dim; d++) sum_gw[d] += fv * dx[d];
+      if (!renorm || (multi ? phase[j] != ph : part_has(phase[j], KIND_BOUNDARY))) continue;
+      double drho = rho[j] - rhoi;
+      for (int a = 0; a < dim; a++) {
+        g[a] += drho * fv * dx[a];
+        for (int b = 0; b < dim; b++) mt[a * dim + b] -= fv * dx[a] * dx[b];  /* (M)_ab = B_ba */
+      }
     }
-    if (r2 >= support2) continue;
-    double fv = kernel_f(&ctx->prm->kern, r2) * vol[j];
-    if (weighted && phase[j] != ph && !part_has(phase[j], KIND_BOUNDARY))
-      div += fv * dvdx * 2.0 * rho_state[j] / (rho_state[i] + rho_state[j]);
-    else
-      div += fv * dvdx;
-    if (own && (phase[j] == ph || part_has(phase[j], KIND_BOUNDARY))) div_ph += fv * dvdx;
-    n_nb++;
-    if (shift)
-      for (int d = 0; d < dim; d++) sum_gw[d] += fv * dx[d];
-    if (!renorm || (multi ? phase[j] != ph : part_has(phase[j], KIND_BOUNDARY))) continue;
-    double drho = rho[j] - rhoi;
-    for (int a = 0; a < dim; a++) {
-      g[a] += drho * fv * dx[a];
-      for (int b = 0; b < dim; b++) mt[a * dim + b] -= fv * dx[a] * dx[b];  /* (M)_ab = B_ba */
-    }
-  }
   *pairs += n_nb;
   int fallback = 0;
   if (renorm) {

@@ -14,36 +14,46 @@
  * scheme, which is not density-weighted either. See doc/theory.md section 4d. */
 #include <math.h>
 #include "physics/linalg.h"
+#include "physics/pair_chunk.h"
 #include "physics/passes.h"
 
 #define COLOUR_GRAD_MIN 0.01     /* |grad chi| h below which a particle has no interface normal */
 #define CURVATURE_MIN_DET 0.1    /* det of B below which the curvature takes Adami's scalar form */
 
 /* The colour gradient of owned fluid particle i, grad chi_i = sum_{j other phase} grad_i W_ij V_j
- * [1/m]. Returns the number of pairs within the support. */
-static long colour_gradient(const struct pass_ctx *ctx, long i, const struct neighbours *nb, double *grad_chi) {
+ * [1/m], in `dim` dimensions (a literal where inlined). Returns the number of pairs within the
+ * support. */
+static inline __attribute__((always_inline)) long colour_gradient_dim(const struct pass_ctx *ctx, long i,
+                                                                      const struct neighbours *nb, double *grad_chi,
+                                                                      const int dim) {
   const struct parts *p = ctx->p;
-  const int dim = p->dim, ph = p->phase[i];
+  const int ph = p->phase[i];
   long pairs = 0;
+  double xi[3];
+  const double *x[3];
+  pair_chunk_centre(p, i, x, xi);
   for (int d = 0; d < dim; d++) grad_chi[d] = 0;
   struct neighbours it = *nb;
-  for (long j; neighbours_next(&it, &j);) {
-    double dx[3], r2 = pair_separation(p, dim, i, j, dx);
-    if (r2 >= ctx->prm->kern.support2) continue;
-    pairs++;
-    if (p->phase[j] == ph || part_has(p->phase[j], KIND_BOUNDARY)) continue;
-    double fv = kernel_f(&ctx->prm->kern, r2) * ctx->w->vol[j];
-    for (int d = 0; d < dim; d++) grad_chi[d] += fv * dx[d];
+  struct pair_chunk c;
+  while (pair_chunk_next(&it, &ctx->prm->kern, x, ctx->w->vol, xi, dim, CHUNK_F, &c)) {
+    pairs += c.n;
+    for (int k = 0; k < c.n; k++) {
+      const long j = c.j[k];
+      if (p->phase[j] == ph || part_has(p->phase[j], KIND_BOUNDARY)) continue;
+      for (int d = 0; d < dim; d++) grad_chi[d] += c.fv[k] * c.dx[d][k];
+    }
   }
   return pairs;
 }
 
-/* Length of a vector of dim components. */
-static double norm_of(const double *a, int dim) {
-  double s = 0;
-  for (int d = 0; d < dim; d++) s += a[d] * a[d];
-  return sqrt(s);
+/* colour_gradient_dim in the particles' dimension. */
+static long colour_gradient(const struct pass_ctx *ctx, long i, const struct neighbours *nb, double *grad_chi) {
+  if (ctx->p->dim == 3) return colour_gradient_dim(ctx, i, nb, grad_chi, 3);
+  return colour_gradient_dim(ctx, i, nb, grad_chi, 2);
 }
+
+/* Length of a vector of three components (those beyond the dimension 0). */
+static double norm_of(const double *a) { return sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]); }
 
 /* trace(G B^-1) for symmetric B (row a of G solved against B: trace(A^T) with A^T = B^-1 G^T),
  * or dim trace(G) / trace(B) where det B < CURVATURE_MIN_DET; 0 without neighbours. */
@@ -62,9 +72,9 @@ static double renormalised_trace(int dim, const double *g, const double *b) {
 /* Normal and |grad chi| of owned fluid particle i. */
 static void interface_normal_of(struct pass_ctx *ctx, long i, const struct neighbours *nb) {
   const int dim = ctx->p->dim;
-  double grad_chi[3];
+  double grad_chi[3] = {0, 0, 0};   /* the axes beyond dim stay 0 */
   ctx->out.pairs += colour_gradient(ctx, i, nb, grad_chi);
-  double g = norm_of(grad_chi, dim);
+  double g = norm_of(grad_chi);
   int on = g * ctx->prm->h >= COLOUR_GRAD_MIN;
   ctx->w->colour_grad[i] = on ? g : 0.0;
   for (int d = 0; d < dim; d++) ctx->w->interface_normal[d][i] = on ? grad_chi[d] / g : 0.0;
@@ -89,21 +99,27 @@ static double curvature_of(const struct pass_ctx *ctx, long i, const struct neig
   const struct parts *p = ctx->p;
   double *const *nrm = ctx->w->interface_normal;
   const int dim = p->dim, ph = p->phase[i];
-  double g[9] = {0}, b[9] = {0};   /* row-major dim x dim */
+  double g[9] = {0}, b[9] = {0}, xi[3];   /* row-major dim x dim */
+  const double *x[3];
+  pair_chunk_centre(p, i, x, xi);
   struct neighbours it = *nb;
-  for (long j; neighbours_next(&it, &j);) {
-    if (part_has(p->phase[j], KIND_BOUNDARY)) continue;
-    double dx[3], r2 = pair_separation(p, dim, i, j, dx), phi = p->phase[j] == ph ? 1.0 : -1.0, nj2 = 0;
-    for (int d = 0; d < dim; d++) nj2 += nrm[d][j] * nrm[d][j];
-    if (r2 >= ctx->prm->kern.support2 || nj2 == 0) continue;
-    (*pairs)++;
-    double fv = kernel_f(&ctx->prm->kern, r2) * ctx->w->vol[j];
-    for (int a = 0; a < dim; a++)
-      for (int c = 0; c < dim; c++) {
-        g[a * dim + c] += (phi * nrm[a][j] - nrm[a][i]) * fv * dx[c];
-        b[a * dim + c] -= dx[a] * fv * dx[c];
-      }
-  }
+  struct pair_chunk ch;
+  while (pair_chunk_next(&it, &ctx->prm->kern, x, ctx->w->vol, xi, dim, CHUNK_F, &ch))
+    for (int k = 0; k < ch.n; k++) {
+      const long j = ch.j[k];
+      if (part_has(p->phase[j], KIND_BOUNDARY)) continue;
+      double dx[3], phi = p->phase[j] == ph ? 1.0 : -1.0, nj2 = 0;
+      pair_chunk_dx(&ch, k, dim, dx);
+      for (int d = 0; d < dim; d++) nj2 += nrm[d][j] * nrm[d][j];
+      if (nj2 == 0) continue;
+      (*pairs)++;
+      const double fv = ch.fv[k];
+      for (int a = 0; a < dim; a++)
+        for (int c = 0; c < dim; c++) {
+          g[a * dim + c] += (phi * nrm[a][j] - nrm[a][i]) * fv * dx[c];
+          b[a * dim + c] -= dx[a] * fv * dx[c];
+        }
+    }
   return renormalised_trace(dim, g, b);
 }
 

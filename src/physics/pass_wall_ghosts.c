@@ -9,6 +9,7 @@
  *    p_k = sum_j [p_j + rho_j (g - a_w).(r_k - r_j)] W V_j / sum_j W V_j. */
 #include <string.h>
 #include "physics/passes.h"
+#include "physics/pair_chunk.h"
 
 /* Shepard sums at one point: {sum W V, and sum W V times p, rho, u[3]} over every fluid phase
  * (all; left zero in a one-phase case, where it would equal phase[0]) and over each phase on its
@@ -99,28 +100,57 @@ static inline void listed_start(struct listed *it, const struct pass_ctx *ctx, c
   if (it->words) fluid_ranges_at(ctx, xs, &it->r);
 }
 
-/* The next listed candidate's slot into *j; 0 when none is left. */
-static inline int listed_next(struct listed *it, long *j) {
+/* The slots of the next kept word of the list that has a bit set (its candidates in stencil
+ * order); 0 when none is left. */
+static inline int listed_slots(struct listed *it, long *slot) {
   while (!it->bits) {
     if (++it->w >= it->words) return 0;
     it->bits = it->point[1 + it->w];
   }
-  long b = 64L * (it->first + it->w) + __builtin_ctzll(it->bits);
-  it->bits &= it->bits - 1;
-  while (b >= it->range_first + it->r.count[it->k]) it->range_first += it->r.count[it->k++];
-  *j = it->r.start[it->k] + (b - it->range_first);
-  return 1;
+  int n = 0;
+  for (uint64_t bits = it->bits; bits; bits &= bits - 1) {
+    long b = 64L * (it->first + it->w) + __builtin_ctzll(bits);
+    while (b >= it->range_first + it->r.count[it->k]) it->range_first += it->r.count[it->k++];
+    slot[n++] = it->r.start[it->k] + (b - it->range_first);
+  }
+  it->bits = 0;
+  return n;
 }
 
-/* visit_near without walls, over the listed candidates of xs: the same candidates in the same
- * order, with the weights from this stage's volumes (visit_near divides m/rho). */
-static long visit_listed(const struct pass_ctx *ctx, const double *xs, const uint64_t *point, near_fn fn,
-                         void *arg) {
+/* The next chunk c of the listed candidates of xs within the kernel support, with their weights
+ * W V_j from this stage's volumes (dim a literal where inlined); 0 when none is left. */
+static inline __attribute__((always_inline)) int listed_chunk(const struct pass_ctx *ctx, struct listed *it,
+                                                              const double *xs, const int dim,
+                                                              struct pair_chunk *c) {
+  long slot[PAIR_CHUNK];
+  const double *restrict x[3] = {ctx->p->x[0], ctx->p->x[1], ctx->p->x[2]};
+  const int m = listed_slots(it, slot);
+  if (m) pair_chunk_fill(slot, m, &ctx->prm->kern, x, ctx->w->vol, xs, dim, CHUNK_W, c);
+  return m > 0;
+}
+
+/* visit_near without walls, over the listed candidates of xs (dim a literal where inlined): the
+ * same candidates in the same order, with the weights from this stage's volumes (visit_near
+ * divides m/rho). */
+static inline __attribute__((always_inline)) long visit_listed_dim(const struct pass_ctx *ctx, const double *xs,
+                                                                   const uint64_t *point, near_fn fn, void *arg,
+                                                                   const int dim) {
   struct listed it;
+  struct pair_chunk c;
   long n = 0;
   listed_start(&it, ctx, xs, point);
-  for (long j; listed_next(&it, &j);) n += visit_if_near(ctx, xs, j, ctx->w->vol, fn, arg);
+  while (listed_chunk(ctx, &it, xs, dim, &c)) {
+    for (int k = 0; k < c.n; k++) fn(arg, ctx, c.j[k], c.fv[k]);
+    n += c.n;
+  }
   return n;
+}
+
+/* visit_listed_dim in the particles' dimension. */
+static long visit_listed(const struct pass_ctx *ctx, const double *xs, const uint64_t *point, near_fn fn,
+                         void *arg) {
+  if (ctx->p->dim == 3) return visit_listed_dim(ctx, xs, point, fn, arg, 3);
+  return visit_listed_dim(ctx, xs, point, fn, arg, 2);
 }
 
 /* The Shepard sums a (zero) of one phase over the listed candidates of xs, inlined with a literal
@@ -129,15 +159,15 @@ static inline __attribute__((always_inline)) long listed_one_phase_dim(const str
                                                                        const double *xs,
                                                                        const uint64_t *point, double *a,
                                                                        const int dim) {
-  double sums[SHEPARD_U + 3] = {0}, wv;
+  double sums[SHEPARD_U + 3] = {0};
   struct listed it;
+  struct pair_chunk c;
   long n = 0;
   listed_start(&it, ctx, xs, point);
-  for (long j; listed_next(&it, &j);)
-    if (near_weight(ctx, xs, j, dim, ctx->w->vol, &wv)) {
-      add_values(sums, ctx->p, j, wv, dim);
-      n++;
-    }
+  while (listed_chunk(ctx, &it, xs, dim, &c)) {
+    for (int k = 0; k < c.n; k++) add_values(sums, ctx->p, c.j[k], c.fv[k], dim);
+    n += c.n;
+  }
   memcpy(a, sums, sizeof sums);
   return n;
 }

@@ -18,6 +18,7 @@
  *   mu_k = mu of phase k + alpha h c0_k rho0_k / (2 (dim + 2)) (artificial viscosity, not in 004). */
 #include <math.h>
 #include "physics/linalg.h"
+#include "physics/pair_chunk.h"
 #include "physics/passes.h"
 
 #define GD_MIN_DET 0.1   /* det of L^-1 below which the gradient correction is dropped */
@@ -33,19 +34,24 @@ static void gd_gradients(struct pass_ctx *ctx, long i, const struct neighbours *
   const struct parts *p = ctx->p;
   const double *restrict vol = ctx->w->vol, *restrict pres = p->p;
   const int dim = p->dim;
-  double gamma = kernel_w(&ctx->prm->kern, 0.0) * vol[i], mt[9] = {0}, g[3] = {0}, out[3];
+  double gamma = kernel_w(&ctx->prm->kern, 0.0) * vol[i], mt[9] = {0}, g[3] = {0}, out[3], xi[3];
+  const double *x[3];
+  pair_chunk_centre(p, i, x, xi);
   struct neighbours it = *nb;
-  for (long j; neighbours_next(&it, &j);) {
-    double dx[3], r2 = pair_separation(p, dim, i, j, dx);
-    if (r2 >= ctx->prm->kern.support2) continue;
-    double fv = kernel_f(&ctx->prm->kern, r2) * vol[j];
-    gamma += kernel_w(&ctx->prm->kern, r2) * vol[j];
-    for (int a = 0; a < dim; a++) {
-      g[a] += (pres[j] - pres[i]) * fv * dx[a];
-      for (int b = 0; b < dim; b++) mt[a * dim + b] -= fv * dx[a] * dx[b];
+  struct pair_chunk c;
+  while (pair_chunk_next(&it, &ctx->prm->kern, x, vol, xi, dim, CHUNK_F, &c))
+    for (int k = 0; k < c.n; k++) {
+      const long j = c.j[k];
+      const double fv = c.fv[k];
+      double dx[3];
+      pair_chunk_dx(&c, k, dim, dx);
+      gamma += kernel_w(&ctx->prm->kern, c.r2[k]) * vol[j];
+      for (int a = 0; a < dim; a++) {
+        g[a] += (pres[j] - pres[i]) * fv * dx[a];
+        for (int b = 0; b < dim; b++) mt[a * dim + b] -= fv * dx[a] * dx[b];
+      }
+      ctx->out.pairs++;
     }
-    ctx->out.pairs++;
-  }
   double det = linalg_solve(dim, mt, g, out);
   int fallback = !(fabs(det) >= GD_MIN_DET);
   for (int d = 0; d < dim; d++) ctx->w->gd_grad_p[d][i] = fallback ? 0.0 : out[d];
@@ -87,23 +93,28 @@ static void gd_rhs(struct pass_ctx *ctx, long i, const struct neighbours *nb) {
   double mu[CASE_MAX_PHASES];   /* mu of each phase, walls taking the phase of i */
   for (int k = 0; k < ctx->c->n_phases; k++) mu[k] = phase_viscosity_total(ctx, k);
   const double eta2 = 0.01 * ctx->prm->h * ctx->prm->h, mui = mu[ph], pgi = pres[i] / gam[i];
-  double div = 0, diss = 0, force[3] = {0, 0, 0}, g[3];
+  double div = 0, diss = 0, force[3] = {0, 0, 0}, g[3], xi[3];
+  const double *x[3];
+  pair_chunk_centre(p, i, x, xi);
   struct neighbours it = *nb;
-  for (long j; neighbours_next(&it, &j);) {
-    double dx[3], r2 = pair_separation(p, dim, i, j, dx), dvdx = 0;
-    if (r2 >= ctx->prm->kern.support2) continue;
-    double fv = kernel_f(&ctx->prm->kern, r2) * vol[j];
-    double muj = part_has(p->phase[j], KIND_BOUNDARY) ? mui : mu[p->phase[j]];
-    double mu_ij = 2.0 * harmonic_mean(mui, muj);
-    double visc = mu_ij * fv * r2 / (r2 + eta2), pg = pgi + pres[j] / gam[j];
-    for (int d = 0; d < dim; d++) {
-      dvdx += (p->v[d][j] - p->v[d][i]) * dx[d];
-      force[d] += -pg * fv * dx[d] - visc * (p->v[d][j] - p->v[d][i]);
+  struct pair_chunk c;
+  while (pair_chunk_next(&it, &ctx->prm->kern, x, vol, xi, dim, CHUNK_F, &c))
+    for (int k = 0; k < c.n; k++) {
+      const long j = c.j[k];
+      const double r2 = c.r2[k], fv = c.fv[k];
+      double dx[3], dvdx = 0;
+      pair_chunk_dx(&c, k, dim, dx);
+      double muj = part_has(p->phase[j], KIND_BOUNDARY) ? mui : mu[p->phase[j]];
+      double mu_ij = 2.0 * harmonic_mean(mui, muj);
+      double visc = mu_ij * fv * r2 / (r2 + eta2), pg = pgi + pres[j] / gam[j];
+      for (int d = 0; d < dim; d++) {
+        dvdx += (p->v[d][j] - p->v[d][i]) * dx[d];
+        force[d] += -pg * fv * dx[d] - visc * (p->v[d][j] - p->v[d][i]);
+      }
+      div += fv * dvdx;
+      diss += dissipation_pair(ctx, i, j, dx, r2) * fv;
+      ctx->out.pairs++;
     }
-    div += fv * dvdx;
-    diss += dissipation_pair(ctx, i, j, dx, r2) * fv;
-    ctx->out.pairs++;
-  }
   body_acceleration(ctx, i, g);
   ctx->w->drho[i] = -p->rho[i] * div + diss;
   for (int d = 0; d < dim; d++) ctx->w->dv[d][i] = force[d] / p->rho[i] + g[d];

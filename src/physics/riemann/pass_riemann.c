@@ -15,6 +15,7 @@
  * Transport velocity (Eq. 12, light phases, notes A10): a_tv,i = -(2 p0_tv/rho_i) sum_j V_j grad_i W_ij. */
 #include <math.h>
 #include "physics/eos.h"
+#include "physics/pair_chunk.h"
 #include "physics/passes.h"
 #include "physics/riemann.h"
 
@@ -51,43 +52,44 @@ static inline __attribute__((always_inline)) void riemann_sums(const struct pass
   const double *restrict x[3] = {p->x[0], p->x[1], p->x[2]}, *restrict v[3] = {p->v[0], p->v[1], p->v[2]};
   const double *restrict rho = p->rho, *restrict pres = p->p, *restrict vol = ctx->w->vol;
   const int *restrict phase = p->phase;
-  const double support2 = ctx->prm->kern.support2;
   double gp[3] = {0, 0, 0}, vs[3] = {0, 0, 0}, dr = 0;
   long n = 0;
   struct neighbours it = *nb;
-  for (long j; neighbours_next(&it, &j);) {
-    double dx[3], r2 = 0, vj[3] = {0, 0, 0}, vdx = 0;
-    for (int d = 0; d < dim; d++) {
-      dx[d] = ci->x[d] - x[d][j];
-      r2 += dx[d] * dx[d];
-    }
-    if (r2 >= support2 || r2 <= 0) continue;
-    n++;
-    const int wall = part_has(phase[j], KIND_BOUNDARY);
-    double pj = pres[j], rhoj = rho[j], cj, etaj;
-    if (wall) {
-      pj = wall_dummy(ctx, ci, j, dx, vj, dim);
-      rhoj = eos_density(&phases[ci->phase], pj);
-      cj = ci->c;
-      etaj = ci->eta;
-    } else {
-      for (int d = 0; d < dim; d++) vj[d] = v[d][j];
-      cj = phases[phase[j]].c0;
-      etaj = phases[phase[j]].viscosity;
-    }
-    for (int d = 0; d < dim; d++) vdx += (ci->v[d] - vj[d]) * dx[d];
-    const double fv = kernel_f(&ctx->prm->kern, r2) * (wall ? ctx->prm->vol0 : vol[j]), r = sqrt(r2), zj = rhoj * cj;
-    if (MOMENTUM) {
-      double pstar = riemann_pressure(ci->z, ci->p, zj, pj, -vdx / r, (ci->z + zj) / (ci->rho + rhoj));
-      double eta = harmonic_mean(ci->eta, etaj);
-      for (int d = 0; d < dim; d++) {
-        gp[d] += pstar * fv * dx[d];
-        vs[d] += eta * fv * (ci->v[d] - vj[d]);
+  struct pair_chunk c;
+  while (pair_chunk_next(&it, &ctx->prm->kern, x, vol, ci->x, dim, CHUNK_F, &c))
+    for (int k = 0; k < c.n; k++) {
+      const long j = c.j[k];
+      const double r2 = c.r2[k];
+      double dx[3], vj[3] = {0, 0, 0}, vdx = 0;
+      if (r2 <= 0) continue;
+      pair_chunk_dx(&c, k, dim, dx);
+      n++;
+      const int wall = part_has(phase[j], KIND_BOUNDARY);
+      double pj = pres[j], rhoj = rho[j], cj, etaj;
+      if (wall) {
+        pj = wall_dummy(ctx, ci, j, dx, vj, dim);
+        rhoj = eos_density(&phases[ci->phase], pj);
+        cj = ci->c;
+        etaj = ci->eta;
+      } else {
+        for (int d = 0; d < dim; d++) vj[d] = v[d][j];
+        cj = phases[phase[j]].c0;
+        etaj = phases[phase[j]].viscosity;
       }
-    } else {
-      dr += fv * (zj * vdx + r * (ci->p - pj)) / (ci->z + zj);
+      for (int d = 0; d < dim; d++) vdx += (ci->v[d] - vj[d]) * dx[d];
+      /* the walls' volume is the lattice's */
+      const double fv = wall ? kernel_f(&ctx->prm->kern, r2) * ctx->prm->vol0 : c.fv[k], r = sqrt(r2), zj = rhoj * cj;
+      if (MOMENTUM) {
+        double pstar = riemann_pressure(ci->z, ci->p, zj, pj, -vdx / r, (ci->z + zj) / (ci->rho + rhoj));
+        double eta = harmonic_mean(ci->eta, etaj);
+        for (int d = 0; d < dim; d++) {
+          gp[d] += pstar * fv * dx[d];
+          vs[d] += eta * fv * (ci->v[d] - vj[d]);
+        }
+      } else {
+        dr += fv * (zj * vdx + r * (ci->p - pj)) / (ci->z + zj);
+      }
     }
-  }
   for (int d = 0; d < dim; d++) {
     grad_p[d] = gp[d];
     visc[d] = vs[d];
@@ -151,18 +153,17 @@ void pass_riemann_continuity(struct pass_ctx *ctx) { pass_for_each_owned(ctx, co
 static void transport_of(struct pass_ctx *ctx, long i, const struct neighbours *nb) {
   const struct parts *p = ctx->p;
   const int dim = p->dim;
-  double s[3] = {0, 0, 0};
+  double s[3] = {0, 0, 0}, xi[3];
   if (riemann_light_phase(ctx->c, p->phase[i])) {
-    long n = 0;
+    const double *x[3];
+    pair_chunk_centre(p, i, x, xi);
     struct neighbours it = *nb;
-    for (long j; neighbours_next(&it, &j);) {
-      double dx[3], r2 = pair_separation(p, dim, i, j, dx);
-      if (r2 >= ctx->prm->kern.support2) continue;
-      double fv = kernel_f(&ctx->prm->kern, r2) * ctx->w->vol[j];
-      for (int d = 0; d < dim; d++) s[d] += fv * dx[d];
-      n++;
+    struct pair_chunk c;
+    while (pair_chunk_next(&it, &ctx->prm->kern, x, ctx->w->vol, xi, dim, CHUNK_F, &c)) {
+      for (int k = 0; k < c.n; k++)
+        for (int d = 0; d < dim; d++) s[d] += c.fv[k] * c.dx[d][k];
+      ctx->out.pairs += c.n;
     }
-    ctx->out.pairs += n;
   }
   for (int d = 0; d < dim; d++) ctx->w->dv[d][i] = -2.0 * ctx->prm->tv_pressure * s[d] / p->rho[i];
 }

@@ -17,25 +17,28 @@
  * over every neighbour and p*_j = p_j for every j (rho*_j = rho'_j of Eq. 20), no Shepard pass. */
 #include <math.h>
 #include "physics/eos.h"
+#include "physics/pair_chunk.h"
 #include "physics/passes.h"
 
 /* Shepard pressure of owned fluid particle i over the fluid of every phase (walls excluded). */
 static void shepard_pressure(struct pass_ctx *ctx, long i, const struct neighbours *nb) {
   const struct parts *p = ctx->p;
   const double *restrict vol = ctx->w->vol, *restrict pres = p->p;
-  const double w0 = kernel_w(&ctx->prm->kern, 0.0), support2 = ctx->prm->kern.support2;
-  double p_sum = pres[i] * vol[i] * w0, vol_sum = vol[i] * w0;
+  const double w0 = kernel_w(&ctx->prm->kern, 0.0);
+  double p_sum = pres[i] * vol[i] * w0, vol_sum = vol[i] * w0, xi[3];
+  const double *x[3];
+  pair_chunk_centre(p, i, x, xi);
   long pairs = 0;
   struct neighbours it = *nb;
-  for (long j; neighbours_next(&it, &j);) {
-    if (part_has(p->phase[j], KIND_BOUNDARY)) continue;
-    double dx[3], r2 = pair_separation(p, p->dim, i, j, dx);
-    if (r2 >= support2) continue;
-    double wv = kernel_w(&ctx->prm->kern, r2) * vol[j];
-    p_sum += pres[j] * wv;
-    vol_sum += wv;
-    pairs++;
-  }
+  struct pair_chunk c;
+  while (pair_chunk_next(&it, &ctx->prm->kern, x, vol, xi, p->dim, CHUNK_W, &c))
+    for (int k = 0; k < c.n; k++) {
+      const long j = c.j[k];
+      if (part_has(p->phase[j], KIND_BOUNDARY)) continue;
+      p_sum += pres[j] * c.fv[k];
+      vol_sum += c.fv[k];
+      pairs++;
+    }
   ctx->w->p_shepard[i] = p_sum / vol_sum;
   ctx->out.pairs += pairs;
 }
@@ -77,7 +80,7 @@ static void spc_sums(const struct pass_ctx *ctx, long i, const struct neighbours
   const int gas = !ctx->c->phases[p->phase[i]].incompressible;
   const int dim = p->dim, ph = p->phase[i];
   const struct phase *fi = &ctx->c->phases[ph];
-  const double pi = pres[i], rhoi = rho[i], eta2 = 0.01 * ctx->prm->h * ctx->prm->h, support2 = ctx->prm->kern.support2;
+  const double pi = pres[i], rhoi = rho[i], eta2 = 0.01 * ctx->prm->h * ctx->prm->h;
   double mu[CASE_MAX_PHASES];
   int heavier[CASE_MAX_PHASES];   /* phases whose velocities i's divergence reads besides its own */
   for (int k = 0; k < ctx->c->n_phases; k++) {
@@ -85,26 +88,32 @@ static void spc_sums(const struct pass_ctx *ctx, long i, const struct neighbours
     heavier[k] = ctx->c->phases[k].rho0 > fi->rho0;
   }
   *s = (struct spc_sums){0};
+  double xi[3];
+  const double *x[3];
+  pair_chunk_centre(p, i, x, xi);
   struct neighbours it = *nb;
-  for (long j; neighbours_next(&it, &j);) {
-    double dx[3], r2 = pair_separation(p, dim, i, j, dx), dvdx = 0;
-    if (r2 >= support2) continue;
-    (*pairs)++;
-    for (int d = 0; d < dim; d++) dvdx += (p->v[d][j] - p->v[d][i]) * dx[d];
-    const double fv = kernel_f(&ctx->prm->kern, r2) * vol[j];   /* gW_ij = fv (r_i - r_j) */
-    const int wall = part_has(p->phase[j], KIND_BOUNDARY), same = p->phase[j] == ph;
-    const double p_star = same || wall || conventional ? pres[j] : p_tilde[j];
-    const double rho_star = same ? rho[j] : eos_density(fi, p_star);
-    const double mu_ij = harmonic_mean(mu[ph], wall ? mu[ph] : mu[p->phase[j]]);
-    const double pi_ij = -dvdx / (r2 + eta2);   /* u_ji.r_ji / (r^2 + 0.01 h^2) */
-    if (same || wall || conventional || (!wall && heavier[p->phase[j]])) s->div += dvdx * fv;
-    if (wall && gas) spc_wall_repulsion(ctx, i, j, s->repulsion);
-    s->diff -= 2.0 * (rho_star - rhoi) * fv;    /* psi*_ij.gW_ij: r_ji.r_ij / r^2 = -1 */
-    for (int d = 0; d < dim; d++) {
-      s->grad_p[d] += (pi + p_star) * fv * dx[d];
-      s->visc[d] += mu_ij * pi_ij * fv * dx[d];
+  struct pair_chunk c;
+  while (pair_chunk_next(&it, &ctx->prm->kern, x, vol, xi, dim, CHUNK_F, &c))
+    for (int k = 0; k < c.n; k++) {
+      const long j = c.j[k];
+      const double r2 = c.r2[k], fv = c.fv[k];   /* gW_ij = fv (r_i - r_j) */
+      double dx[3], dvdx = 0;
+      pair_chunk_dx(&c, k, dim, dx);
+      (*pairs)++;
+      for (int d = 0; d < dim; d++) dvdx += (p->v[d][j] - p->v[d][i]) * dx[d];
+      const int wall = part_has(p->phase[j], KIND_BOUNDARY), same = p->phase[j] == ph;
+      const double p_star = same || wall || conventional ? pres[j] : p_tilde[j];
+      const double rho_star = same ? rho[j] : eos_density(fi, p_star);
+      const double mu_ij = harmonic_mean(mu[ph], wall ? mu[ph] : mu[p->phase[j]]);
+      const double pi_ij = -dvdx / (r2 + eta2);   /* u_ji.r_ji / (r^2 + 0.01 h^2) */
+      if (same || wall || conventional || (!wall && heavier[p->phase[j]])) s->div += dvdx * fv;
+      if (wall && gas) spc_wall_repulsion(ctx, i, j, s->repulsion);
+      s->diff -= 2.0 * (rho_star - rhoi) * fv;    /* psi*_ij.gW_ij: r_ji.r_ij / r^2 = -1 */
+      for (int d = 0; d < dim; d++) {
+        s->grad_p[d] += (pi + p_star) * fv * dx[d];
+        s->visc[d] += mu_ij * pi_ij * fv * dx[d];
+      }
     }
-  }
 }
 
 /* Both right-hand sides of owned fluid particle i. */
