@@ -82,8 +82,9 @@ class Report:
                % (m["compiler"], m.get("flags", "-O2 -ftree-vectorize -g")),
                "| date | %s |" % m["date"],
                "| run time of the whole suite | %.1f min |" % (m["seconds"] / 60)]
-        self.md += ["| groups run again: %s | commit `%s`, %s, load %.2f / %.2f / %.2f at start, %.2f / %.2f / %.2f at end, %.1f min |"
-                  % ((r["groups"], r["commit"], r["date"]) + tuple(r["load_start"]) + tuple(r["load_end"]) + (r["seconds"] / 60,))
+        self.md += ["| groups run again: %s | commit `%s`%s, %s, load %.2f / %.2f / %.2f at start, %.2f / %.2f / %.2f at end, %.1f min |"
+                  % ((r["groups"], r["commit"], ", flags `%s`" % r["flags"] if "flags" in r else "", r["date"])
+                     + tuple(r["load_start"]) + tuple(r["load_end"]) + (r["seconds"] / 60,))
                   for r in m.get("reruns", [])]
         self.md += ["",
                "Every run: `scripts/mpirun -n R build/mpsph run CASE --set resolution.dx=DX --set "
@@ -165,8 +166,8 @@ class Report:
         self.w("## 3. Floating-point rate of the main pass", "",
                "Peak: `build/bench/peak_fma` (scripts/bench/peak_fma.c), 32 independent multiply-add "
                "accumulators compiled with the solver's flags and `-ffp-contract=fast`, best rate of "
-               "repeated sweeps, run at the start and the end of the suite: %s Gflop/s (the larger is "
-               "used). With the default flags (`ARCH=native`) this is the fused multiply-add peak of one "
+               "repeated sweeps, run at the start and the end of the run that measured the sizes of section "
+               "1 (the suite, or its rerun with `--only sizes`): %s Gflop/s (the larger is used). With the default flags (`ARCH=native`) this is the fused multiply-add peak of one "
                "core in the machine's widest vectors, which the solver itself (no contraction, to keep "
                "its rounding fixed) cannot reach in full: its multiply and add are two instructions."
                % " and ".join("%.3g" % (p / 1e9) for p in self.peaks), "",
