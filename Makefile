@@ -52,6 +52,8 @@ FLAGS_NOW   := $(MPICC) $(filter-out -DMPSPH_VERSION=%,$(CFLAGS))
 ifneq ($(FLAGS_NOW),$(shell cat $(FLAGS_STAMP) 2>/dev/null))
   $(shell mkdir -p build && echo '$(FLAGS_NOW)' > $(FLAGS_STAMP))
 endif
+$(FLAGS_STAMP):   # again after a clean in the same make command
+	@mkdir -p build && echo '$(FLAGS_NOW)' > $@
 
 # The case loader and what `check` runs of it, without MPI: the fuzz target and its replay.
 FUZZ_SRC := $(addprefix src/,case/case_load.c case/yaml_tree.c case/init.c case/geometry.c case/motion.c \

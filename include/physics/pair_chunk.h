@@ -81,7 +81,7 @@ static inline __attribute__((always_inline)) void pair_chunk_fill_dim(const long
   c->n = n;
 }
 
-/** The chunk c of the m slots `slot` around the point xi [m] (which a literal where inlined, so
+/** The chunk c of the m slots `slot` around the point xi [m] (`which` a literal where inlined, so
  *  the loops specialise; each dimension has its loops, unrolled over the axes): separations,
  *  squared distances and which (F or W) times vol[j] [m^dim], then the pairs within the support
  *  kept in the slots' order. */

@@ -22,7 +22,7 @@ struct shepard {
 };
 
 /* Whether candidate j lies within the kernel support of xs (the squared distance summed over
- * `dim` axes, a literal where it is inlined), and its weight W V_j into *wv if it does: V_j from
+ * `dim` axes), and its weight W V_j into *wv if it does: V_j from
  * vol (this stage's volumes m/rho, pass_fluid_volumes) or, with vol NULL, m_j / rho_j. */
 static inline __attribute__((always_inline)) int near_weight(const struct pass_ctx *ctx, const double *xs, long j,
                                                              const int dim, const double *vol, double *wv) {
