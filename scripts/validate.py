@@ -23,8 +23,9 @@ Usage: scripts/validate.py [--quick] [--only ID[,ID]] [--reuse] [--jobs N] [--ru
   --rung K  run only the K-th rung of the selection (0-based, as --list orders them), no report:
             for job arrays; a later --reuse invocation writes the report from the runs
   --jobs N  run the selected rungs first, several at once while their ranks fit in N cores (make
-            validate JOBS=N; default 1: one after the other); each run's wall time is its own, taken
-            while the others ran beside it
+            validate JOBS=N; default 1: one after the other), the longest first by the wall times
+            the report in --report records (rungs it has no time for before them); each run's wall
+            time is its own, taken while the others ran beside it
 MPSPH_LAUNCHER (default "scripts/mpirun -n {np}") starts the ranks, e.g. "srun -n {np}".
 """
 import argparse
@@ -143,17 +144,35 @@ def run_rung(study, r, out, reuse, done=DONE):
     return reusable(study, r, out, reuse, done) or Launched(study, r, out).record(done)
 
 
+def earlier_seconds(report):
+    """The wall time [s] of each rung, keyed (study, label, dx, ranks) as results.csv writes them,
+    that the report in folder `report` records ({} if none)."""
+    return {(row["study"], row["label"], row["dx"], row["np"]): float(row["wall_seconds"])
+            for row in read_report(report)[1]}
+
+
+def longest_first(queue, seconds):
+    """The rungs of queue [(study, rung, folder)] ordered by their wall time in seconds (earlier_seconds),
+    longest first, the rungs it does not know ahead of them (they may be long) in queue order, so that
+    the packed runs do not end with a tail of long runs one after the other."""
+    def known(item):
+        s, r, _ = item
+        return seconds.get((s["id"], r["label"], "%g" % r["dx"], str(r["np"])), math.inf)
+    return sorted(queue, key=known, reverse=True)
+
+
 def run_packed(todo, args, done=DONE):
     """Run the rungs todo [(study, rung)] that are not reusable, as many at once as their ranks fit in
-    args.jobs cores (a run with more ranks than that alone): whenever cores are free, the first
-    waiting rung that fits in them starts; their records go to their folders, where run_study reads
-    them back."""
+    args.jobs cores (a run with more ranks than that alone), longest first by the wall times of the
+    report in args.report (longest_first): whenever cores are free, the first waiting rung that fits
+    in them starts; their records go to their folders, where run_study reads them back."""
     running, queue, folders = [], [], set()
     for s, r in todo:   # studies that share their runs (a "runs" key) share a folder: one run each
         out = rung_dir(args.runs, s, r)
         if out not in folders and not reusable(s, r, out, args.reuse, done):
             queue.append((s, r, out))
         folders.add(out)
+    queue = longest_first(queue, earlier_seconds(args.report))
     try:
         while queue or running:
             free = args.jobs - sum(run.np for run in running)

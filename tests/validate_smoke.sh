@@ -9,7 +9,8 @@
 # current ones is run again (the dam-break front's rung, whose overrides hold a value with a
 # space, is read back), and a run a stop signal ended before its end is not taken as finished. And
 # --only with a report in place: only the chosen study's section and
-# rows are replaced. And --jobs 2: 1-rank rungs run two at a time, with the same results, and a
+# rows are replaced. And --jobs 2: 1-rank rungs run two at a time (longest first, by the report's
+# wall times), with the same results, and a
 # folder two studies share runs once.
 set -eu
 cd "$(dirname "$0")/.."
@@ -132,3 +133,16 @@ assert len(recs) == 3 and all(r["status"] == 0 for r in recs), recs
 assert recs[1]["started"] < recs[0]["started"] + recs[0]["wall"], "the first two runs did not overlap"
 PY
 echo "jobs: two rungs at a time, the same errors and steps as one after the other; a shared folder run once"
+
+# --jobs again, with the report just written: the rungs start longest first by its wall times
+cp "$out/report_jobs/results.csv" "$out/jobs_times.csv"
+"$PYTHON" scripts/validate.py --coarsest --only oscillating-drop,dambreak-front,standing-wave-period,standing-wave-decay \
+  --jobs 2 --runs "$out/runs_jobs2" --report "$out/report_jobs" > "$out/jobs2.log"
+"$PYTHON" - "$out/jobs_times.csv" "$out/jobs2.log" <<'PY'
+import csv, sys
+wall = {r["study"]: float(r["wall_seconds"]) for r in csv.DictReader(open(sys.argv[1]))}
+started = [line.split(":")[0] for line in open(sys.argv[2]) if line.rstrip().endswith(" started")]
+times = [wall[s] for s in started]
+assert len(started) == 3 and times == sorted(times, reverse=True), (started, times)
+PY
+echo "jobs: the rungs start longest first by the report's wall times"
