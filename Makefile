@@ -37,18 +37,18 @@ OPT_portable := -O2 -ftree-vectorize
 OPT_native   := -O3 -march=native
 VERSION := $(shell git describe --always --dirty 2>/dev/null || echo unknown)
 
+# CFLAGS (the optimisation flags; a user's, from the environment or the command line, replace
+# ARCH's) is left as given, so that make test's sub-make, to which it is passed down, builds with
+# the same ALL_CFLAGS (and the same flags stamp) as the make that called it.
 CFLAGS  ?= $(OPT_$(ARCH)) -g
-ifeq ($(SINGLE_PHASE),1)   # benchmark variant: multiphase specialisations compiled out
-  CFLAGS += -DMPSPH_SINGLE_PHASE
-endif
 BASE_CFLAGS := -std=c11 -D_POSIX_C_SOURCE=200809L -Wall -Wextra -Werror -Iinclude \
            -DMPSPH_VERSION='"$(VERSION)"' $(HDF5_CFLAGS) $(METIS_CFLAGS) $(YAML_CFLAGS)
-CFLAGS  += $(BASE_CFLAGS)
+ALL_CFLAGS := $(CFLAGS) $(if $(filter 1,$(SINGLE_PHASE)),-DMPSPH_SINGLE_PHASE) $(BASE_CFLAGS)
 LDLIBS  := $(HDF5_LIBS) $(METIS_LIBS) $(YAML_LIBS) -lm
 # The compiler flags of the objects in build/ (the version string aside): rewritten when they
 # change (another ARCH, CFLAGS), so that every object is compiled again with the new ones.
 FLAGS_STAMP := build/cflags.txt
-FLAGS_NOW   := $(MPICC) $(filter-out -DMPSPH_VERSION=%,$(CFLAGS))
+FLAGS_NOW   := $(MPICC) $(filter-out -DMPSPH_VERSION=%,$(ALL_CFLAGS))
 ifneq ($(FLAGS_NOW),$(shell cat $(FLAGS_STAMP) 2>/dev/null))
   $(shell mkdir -p build && echo '$(FLAGS_NOW)' > $(FLAGS_STAMP))
 endif
@@ -84,14 +84,14 @@ deps:
 build/obj/%.o: src/%.c $(HDR) $(FLAGS_STAMP)
 	@echo "CC $<"
 	@mkdir -p $(@D)
-	@$(MPICC) $(CFLAGS) -c $< -o $@
+	@$(MPICC) $(ALL_CFLAGS) -c $< -o $@
 
 build/libmpsph.a: $(LIB_OBJ)
 	@ar rcs $@ $^
 
 build/mpsph: build/obj/app/main.o build/libmpsph.a
 	@echo "LD $@"
-	@$(MPICC) $(CFLAGS) $^ -o $@ $(LDLIBS)
+	@$(MPICC) $(ALL_CFLAGS) $^ -o $@ $(LDLIBS)
 
 build/asan/obj/%.o: src/%.c $(HDR)
 	@echo "CC (asan) $<"
@@ -104,7 +104,7 @@ build/asan/mpsph: $(ASAN_OBJ)
 
 build/tests/%: tests/%.c tests/check.h tests/engine_test.h build/libmpsph.a $(FLAGS_STAMP) | build/tests
 	@echo "LD $@"
-	@$(MPICC) $(CFLAGS) -Itests $< build/libmpsph.a -o $@ $(LDLIBS)
+	@$(MPICC) $(ALL_CFLAGS) -Itests $< build/libmpsph.a -o $@ $(LDLIBS)
 
 build/tests/fuzz_replay: tests/fuzz/replay.c $(FUZZ_SRC) $(HDR) | build/tests
 	@echo "LD $@"
@@ -159,17 +159,17 @@ run: deps
 # DualSPHysics CPU binary; DUALSPHYSICS_SRC=DIR its source tree if not three levels above BIN.
 BENCH_TOOLS := build/bench/peak_fma build/bench/bench_hdf5
 build/bench/peak_fma: scripts/bench/peak_fma.c $(FLAGS_STAMP) | build/bench
-	@$(MPICC) $(CFLAGS) -ffp-contract=fast $< -o $@
+	@$(MPICC) $(ALL_CFLAGS) -ffp-contract=fast $< -o $@
 build/bench/bench_hdf5: scripts/bench/bench_hdf5.c build/libmpsph.a | build/bench
-	@$(MPICC) $(CFLAGS) $< build/libmpsph.a -o $@ $(LDLIBS)
+	@$(MPICC) $(ALL_CFLAGS) $< build/libmpsph.a -o $@ $(LDLIBS)
 build/bench:
 	mkdir -p $@
 build/bench/mpsph-single-phase: $(SRC) $(HDR) $(FLAGS_STAMP) | build/bench
 	@echo "LD $@ (SINGLE_PHASE)"
-	@$(MPICC) $(filter-out -DMPSPH_SINGLE_PHASE,$(CFLAGS)) -DMPSPH_SINGLE_PHASE $(SRC) -o $@ $(LDLIBS)
+	@$(MPICC) $(filter-out -DMPSPH_SINGLE_PHASE,$(ALL_CFLAGS)) -DMPSPH_SINGLE_PHASE $(SRC) -o $@ $(LDLIBS)
 build/tests/test_no_alloc: tests/test_no_alloc.c tests/check.h tests/engine_test.h build/libmpsph.a | build/tests
 	@echo "LD $@"
-	@$(MPICC) $(CFLAGS) -Itests $< build/libmpsph.a -o $@ $(LDLIBS) \
+	@$(MPICC) $(ALL_CFLAGS) -Itests $< build/libmpsph.a -o $@ $(LDLIBS) \
 	  -Wl,--wrap=malloc,--wrap=calloc,--wrap=realloc
 bench: deps
 	@$(MAKE) --no-print-directory build/mpsph $(BENCH_TOOLS)

@@ -48,12 +48,19 @@ struct neighbours {
   uint64_t bits;           /* the bits of word w not read yet */
 };
 
-/** The next neighbour slot into *j; 0 when the list is exhausted. */
-static inline int neighbours_next(struct neighbours *nb, long *j) {
+/** Move nb to the next word with bits not read yet (the current one if it has some); 0 when
+ *  the list is exhausted. */
+static inline int neighbours_word(struct neighbours *nb) {
   while (!nb->bits) {
     if (++nb->w >= nb->words) return 0;
     nb->bits = nb->mask[nb->w];
   }
+  return 1;
+}
+
+/** The next neighbour slot into *j; 0 when the list is exhausted. */
+static inline int neighbours_next(struct neighbours *nb, long *j) {
+  if (!neighbours_word(nb)) return 0;
   *j = nb->candidates[nb->w * 64 + __builtin_ctzll(nb->bits)];
   nb->bits &= nb->bits - 1;
   return 1;

@@ -25,10 +25,7 @@ struct pair_chunk {
 
 /* Decode the next non-empty word of the list into slots; the number of them (0: list exhausted). */
 static inline int pair_chunk_slots(struct neighbours *it, long *slot) {
-  while (!it->bits) {
-    if (++it->w >= it->words) return 0;
-    it->bits = it->mask[it->w];
-  }
+  if (!neighbours_word(it)) return 0;
   const int *cand = it->candidates + (long)it->w * PAIR_CHUNK;
   int n = 0;
   for (uint64_t b = it->bits; b; b &= b - 1) slot[n++] = cand[__builtin_ctzll(b)];

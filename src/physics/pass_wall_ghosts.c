@@ -21,26 +21,16 @@ struct shepard {
   int with_rho_r, one_phase;
 };
 
-/* Whether candidate j lies within the kernel support of xs (the squared distance summed over
- * `dim` axes), and its weight W V_j into *wv if it does: V_j from
- * vol (this stage's volumes m/rho, pass_fluid_volumes) or, with vol NULL, m_j / rho_j. */
-static inline __attribute__((always_inline)) int near_weight(const struct pass_ctx *ctx, const double *xs, long j,
-                                                             const int dim, const double *vol, double *wv) {
-  const struct parts *p = ctx->p;
-  double r2 = 0;
-  for (int d = 0; d < dim; d++) r2 += (xs[d] - p->x[d][j]) * (xs[d] - p->x[d][j]);
-  if (r2 >= ctx->prm->kern.support2) return 0;
-  *wv = kernel_w(&ctx->prm->kern, r2) * (vol ? vol[j] : p->m[j] / p->rho[j]);
-  return 1;
-}
-
-/* Call fn for candidate j if it lies within the kernel support of xs (weights as near_weight's); 1
- * if it did. */
+/* Call fn for candidate j with its weight W V_j if it lies within the kernel support of xs: V_j
+ * from vol (this stage's volumes m/rho, pass_fluid_volumes) or, with vol NULL, m_j / rho_j; 1 if
+ * it did. */
 static inline int visit_if_near(const struct pass_ctx *ctx, const double *xs, long j, const double *vol, near_fn fn,
                                 void *arg) {
-  double wv;
-  if (!near_weight(ctx, xs, j, ctx->p->dim, vol, &wv)) return 0;
-  fn(arg, ctx, j, wv);
+  const struct parts *p = ctx->p;
+  double r2 = 0;
+  for (int d = 0; d < p->dim; d++) r2 += (xs[d] - p->x[d][j]) * (xs[d] - p->x[d][j]);
+  if (r2 >= ctx->prm->kern.support2) return 0;
+  fn(arg, ctx, j, kernel_w(&ctx->prm->kern, r2) * (vol ? vol[j] : p->m[j] / p->rho[j]));
   return 1;
 }
 
@@ -63,7 +53,7 @@ static void fluid_ranges_at(const struct pass_ctx *ctx, const double *xs, struct
 }
 
 /* Call fn for every particle of the ranges r within the kernel support of xs, weights as
- * near_weight's; returns the number of calls. */
+ * visit_if_near's; returns the number of calls. */
 static long visit_ranges(const struct pass_ctx *ctx, const double *xs, const struct neighbour_ranges *r,
                          const double *vol, near_fn fn, void *arg) {
   long n = 0;

@@ -1,0 +1,31 @@
+#!/usr/bin/env bash
+# test-cores: 1
+# scripts/mpirun leaves its ranks free to run on any core the caller may use (--bind-to none), so
+# runs started side by side (make validate JOBS=N) spread over the cores instead of all sitting on
+# the first one, where Open MPI binds the ranks of a small job; MPSPH_BIND=core restores Open MPI's
+# binding; a bad command line exits with status 1.
+set -u
+cd "$(dirname "$0")/.."
+unset OMPI_MCA_hwloc_base_binding_policy   # scripts/run-tests sets it for its own runs
+fail=0
+own=$(grep Cpus_allowed_list /proc/self/status | cut -f2)
+ranked=$(scripts/mpirun -n 1 grep Cpus_allowed_list /proc/self/status | cut -f2)
+if [ "$ranked" = "$own" ]; then
+  echo "ok: a rank may run on the caller's cores ($own)"
+else
+  echo "FAIL: the rank may run on cores $ranked only, the caller on $own"
+  fail=1
+fi
+if [ "$(nproc)" -gt 1 ]; then
+  bound=$(MPSPH_BIND=core scripts/mpirun -n 1 grep Cpus_allowed_list /proc/self/status | cut -f2)
+  if [[ "$bound" =~ ^[0-9]+$ ]]; then
+    echo "ok: MPSPH_BIND=core binds the rank to core $bound"
+  else
+    echo "FAIL: MPSPH_BIND=core gave the cores $bound"
+    fail=1
+  fi
+fi
+scripts/mpirun true > /dev/null 2>&1
+status=$?
+if [ "$status" -eq 1 ]; then echo "ok: usage error -> 1"; else echo "FAIL: usage error gave $status"; fail=1; fi
+exit $fail
