@@ -154,7 +154,8 @@ def earlier_seconds(report):
 def longest_first(queue, seconds):
     """The rungs of queue [(study, rung, folder)] ordered by their wall time in seconds (earlier_seconds),
     longest first, the rungs it does not know ahead of them (they may be long) in queue order, so that
-    the packed runs do not end with a tail of long runs one after the other."""
+    short rungs fill the cores at the end (a rung wider than the free cores still lets narrower ones
+    behind it start first: run_packed)."""
     def known(item):
         s, r, _ = item
         return seconds.get((s["id"], r["label"], "%g" % r["dx"], str(r["np"])), math.inf)

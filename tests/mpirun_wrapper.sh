@@ -2,8 +2,8 @@
 # test-cores: 1
 # scripts/mpirun leaves its ranks free to run on any core the caller may use (--bind-to none), so
 # runs started side by side (make validate JOBS=N) spread over the cores instead of all sitting on
-# the first one, where Open MPI binds the ranks of a small job; MPSPH_BIND=core restores Open MPI's
-# binding; a bad command line exits with status 1.
+# the first one, where Open MPI binds the ranks of a small job; MPSPH_BIND=core forces core binding;
+# a bad command line exits with status 1.
 set -u
 cd "$(dirname "$0")/.."
 unset OMPI_MCA_hwloc_base_binding_policy   # scripts/run-tests sets it for its own runs
