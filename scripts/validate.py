@@ -144,11 +144,20 @@ def run_rung(study, r, out, reuse, done=DONE):
     return reusable(study, r, out, reuse, done) or Launched(study, r, out).record(done)
 
 
+def rung_key(study, r):
+    """A rung's identity as results.csv writes it: (study, label, dx, ranks), as strings."""
+    return (study["id"], r["label"], "%g" % r["dx"], str(r["np"]))
+
+
+RUNS_FOLDER = {s["id"]: s.get("runs", s["id"]) for s in STUDIES}   # studies with a "runs" key share a run
+
+
 def earlier_seconds(report):
-    """The wall time [s] of each rung, keyed (study, label, dx, ranks) as results.csv writes them,
-    that the report in folder `report` records ({} if none)."""
-    return {(row["study"], row["label"], row["dx"], row["np"]): float(row["wall_seconds"])
-            for row in read_report(report)[1]}
+    """The wall time [s] of each rung that the report in folder `report` records ({} if none), keyed
+    as rung_key but with the study's runs folder for the study: studies that share their runs
+    (standing-wave-period and -decay) share the time, whichever of them the report holds."""
+    return {(RUNS_FOLDER.get(row["study"], row["study"]), row["label"], row["dx"], row["np"]):
+            float(row["wall_seconds"]) for row in read_report(report)[1]}
 
 
 def longest_first(queue, seconds):
@@ -158,7 +167,7 @@ def longest_first(queue, seconds):
     behind it start first: run_packed)."""
     def known(item):
         s, r, _ = item
-        return seconds.get((s["id"], r["label"], "%g" % r["dx"], str(r["np"])), math.inf)
+        return seconds.get((RUNS_FOLDER[s["id"]],) + rung_key(s, r)[1:], math.inf)
     return sorted(queue, key=known, reverse=True)
 
 
@@ -309,10 +318,9 @@ def csv_rows(study, rows):
     out = []
     for row in rows:
         r, rec = row["rung"], row["rec"]
-        out.append(dict(zip(CSV_HEADER, map(str, [
-            study["id"], r["label"], "%g" % r["dx"], r["np"], rec["fluid"], rec["wall_particles"], rec["steps"],
-            "%.2f" % rec["wall"], "%.6g" % row["err"], "%g" % study["threshold"],
-            verdict(row["err"], study["threshold"])]))))
+        out.append(dict(zip(CSV_HEADER, rung_key(study, r) + tuple(map(str, [
+            rec["fluid"], rec["wall_particles"], rec["steps"], "%.2f" % rec["wall"], "%.6g" % row["err"],
+            "%g" % study["threshold"], verdict(row["err"], study["threshold"])])))))
     return out
 
 

@@ -2,8 +2,8 @@
 # test-cores: 1
 # scripts/mpirun leaves its ranks free to run on any core the caller may use (--bind-to none), so
 # runs started side by side (make validate JOBS=N) spread over the cores instead of all sitting on
-# the first one, where Open MPI binds the ranks of a small job; MPSPH_BIND=core forces core binding;
-# a bad command line exits with status 1.
+# the first one, where Open MPI binds the ranks of a small job; MPSPH_BIND=core forces core binding,
+# also with more ranks than cores; a bad command line exits with status 1.
 set -u
 cd "$(dirname "$0")/.."
 unset OMPI_MCA_hwloc_base_binding_policy   # scripts/run-tests sets it for its own runs
@@ -16,14 +16,30 @@ else
   echo "FAIL: the rank may run on cores $ranked only, the caller on $own"
   fail=1
 fi
-if [ "$(nproc)" -gt 1 ]; then
+# count_cpus LIST: the number of CPUs in a list such as 0-3,8 (Cpus_allowed_list)
+count_cpus() {
+  local n=0 part parts
+  IFS=, read -ra parts <<< "$1"
+  for part in "${parts[@]}"; do
+    if [[ "$part" == *-* ]]; then n=$((n + ${part#*-} - ${part%-*} + 1)); else n=$((n + 1)); fi
+  done
+  echo "$n"
+}
+if [ "$(nproc)" -gt 1 ]; then   # a core may hold several hardware threads (e.g. 0,4): fewer CPUs suffice
   bound=$(MPSPH_BIND=core scripts/mpirun -n 1 grep Cpus_allowed_list /proc/self/status | cut -f2)
-  if [[ "$bound" =~ ^[0-9]+$ ]]; then
-    echo "ok: MPSPH_BIND=core binds the rank to core $bound"
+  if [ -n "$bound" ] && [ "$(count_cpus "$bound")" -lt "$(count_cpus "$own")" ]; then
+    echo "ok: MPSPH_BIND=core binds the rank to CPUs $bound (the caller has $own)"
   else
-    echo "FAIL: MPSPH_BIND=core gave the cores $bound"
+    echo "FAIL: MPSPH_BIND=core gave the CPUs '$bound' (the caller has $own)"
     fail=1
   fi
+fi
+over=$(($(nproc) + 1))
+if MPSPH_BIND=core scripts/mpirun -n "$over" true > /dev/null 2>&1; then
+  echo "ok: MPSPH_BIND=core with $over ranks on $(nproc) cores runs (overload allowed)"
+else
+  echo "FAIL: MPSPH_BIND=core with $over ranks on $(nproc) cores failed"
+  fail=1
 fi
 scripts/mpirun true > /dev/null 2>&1
 status=$?
