@@ -245,3 +245,20 @@ def forced_sloshing(ax, items):
                 label="linear solution")
     ax.set_xlabel("t [s]")
     ax.set_ylabel("elevation at the gauge [mm]")
+
+
+def lock_exchange(ax, items):
+    """Distance of the light (water) front along the lid and of the dense front along the floor from
+    the lock, in units of H, against t* = t sqrt(g'/H), with the slope Fr = 1/2 of the
+    energy-conserving light current (dashed) through the light front's mean point over the fitted
+    window."""
+    depth = 0.2
+    for r, c in items:
+        line = ax.plot(c["t_star"], c["light"] / depth, "o-", ms=3, lw=0.8, label=_label(r) + ", light front")[0]
+        ax.plot(c["t_star"], c["dense"] / depth, "x--", ms=3, lw=0.6, color=line.get_color(),
+                label=_label(r) + ", dense front")
+        t, x = c["t_star"][c["fit"]], c["light"][c["fit"]] / depth
+        ax.plot(t, x.mean() + 0.5 * (t - t.mean()), "k--", lw=0.8)
+    ax.plot([], [], "k--", lw=0.8, label="Fr = 1/2 (energy-conserving light current)")
+    ax.set_xlabel("t* = t sqrt(g'/H)")
+    ax.set_ylabel("front distance from the lock / H")
