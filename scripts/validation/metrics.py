@@ -1227,36 +1227,40 @@ def sloshing_growth(run, dx, gauge="WG", length=0.57, amplitude=0.005, omega=6.0
 
 def lock_exchange_fronts(run, dx, x_lock=0.905, depth=0.2):
     """Rows (t [s], light front x [m], dense front x [m]) of the snapshots of a lock exchange with
-    the light phase (phase 0) left of x_lock. In columns dx wide along x: the light front is the
-    right edge of the rightmost column where the light phase is at least half of the particles in
-    the top quarter of the depth (along the lid), the dense front the left edge of the leftmost
-    column where the dense phase is at least half of those in the bottom quarter (along the floor)."""
+    the light phase (phase 0) left of x_lock. A window 2 dx wide slides along x in steps of dx/8:
+    the light front is the rightmost window centre where the light phase is at least half of the
+    window's particles in the top quarter of the depth (along the lid), the dense front the
+    leftmost one where the dense phase is at least half of those in the bottom quarter (along the
+    floor). The sliding window keeps the fronts from snapping to a fixed grid of columns."""
     vertical = int(read_config(run)["dimension"]) - 1
     rows = []
     for path in snapshots(run):
         t, s = read_snapshot(path)
         x, z, light = s["position"][:, 0], s["position"][:, vertical], s["phase"] == 0
-        edges = np.arange(x.min() - 0.5 * dx, x.max() + dx, dx)
+        centres = np.arange(x.min(), x.max(), dx / 8)
 
         def majority(band, mine):
-            total = np.histogram(x[band], edges)[0]
-            return np.nonzero(2 * np.histogram(x[band & mine], edges)[0] >= np.maximum(total, 1))[0]
+            xs, xm = np.sort(x[band]), np.sort(x[band & mine])
+            total = np.searchsorted(xs, centres + dx) - np.searchsorted(xs, centres - dx)
+            count = np.searchsorted(xm, centres + dx) - np.searchsorted(xm, centres - dx)
+            return centres[(total > 0) & (2 * count >= total)]
 
         top = majority(z > 0.75 * depth, light)
         bottom = majority(z < 0.25 * depth, ~light)
-        rows.append((t, edges[top.max() + 1] if len(top) else x_lock, edges[bottom.min()] if len(bottom) else x_lock))
+        rows.append((t, top.max() if len(top) else x_lock, bottom.min() if len(bottom) else x_lock))
     return np.array(rows)
 
 
-def lock_exchange_front(run, dx, rho_light=998.6, rho_dense=1466.3, depth=0.2, t_star_fit=1.5, x_lock=0.905):
+def lock_exchange_front(run, dx, depth=0.2, t_star_fit=1.5, x_lock=0.905):
     """Lock exchange: |Fr_L / 0.5 - 1|, Fr_L = U_L / sqrt(g' H) the light (water) current's front
     speed, U_L the least-squares slope of its front (lock_exchange_fronts) over t* = t sqrt(g'/H) >=
-    t_star_fit (after the release's acceleration), g' = g (1 - rho_light / rho_dense). 1/2 is
-    Benjamin's (1968) energy-conserving current of half the depth, which the light current of a
-    full-depth lock exchange is in the two-layer theory Lowe et al. (2005) retain
-    (cases/lock-exchange-3d/README.md). Notes: Fr_L, the dense front's Fr_D, both fronts' distances
-    from the lock at t* = 3 and at the end."""
-    g_reduced = G * (1 - rho_light / rho_dense)
+    t_star_fit (after the release's acceleration), g' = g (1 - rho_light / rho_dense) with the two
+    phases' rho0 from the run's config. 1/2 is Benjamin's (1968) energy-conserving current of half
+    the depth, which the light current of a full-depth lock exchange is in the two-layer theory
+    Lowe et al. (2005) retain (cases/lock-exchange-3d/reference/README.md). Notes: Fr_L, the dense
+    front's Fr_D, both fronts' distances from the lock at t* = 3 and at the end."""
+    light_phase, dense_phase = read_config(run)["phases"][:2]
+    g_reduced = G * (1 - float(light_phase["rho0"]) / float(dense_phase["rho0"]))
     u_scale, t_scale = math.sqrt(g_reduced * depth), math.sqrt(depth / g_reduced)
     rows = lock_exchange_fronts(run, dx, x_lock, depth)
     t_star, light, dense = rows[:, 0] / t_scale, rows[:, 1] - x_lock, x_lock - rows[:, 2]
@@ -1270,4 +1274,5 @@ def lock_exchange_front(run, dx, rho_light=998.6, rho_dense=1466.3, depth=0.2, t
              "light %.3f m, dense %.3f m; at t* %.2f: %.3f m, %.3f m" % (
                  fr_light, fr_dense, t_star_fit, t_star[-1], u_scale, t_star[at3], light[at3], dense[at3],
                  t_star[-1], light[-1], dense[-1]))
-    return abs(fr_light / 0.5 - 1), notes, {"t_star": t_star, "light": light, "dense": dense, "fit": fit}
+    return abs(fr_light / 0.5 - 1), notes, {"t_star": t_star, "light": light, "dense": dense, "fit": fit,
+                                              "depth": depth}

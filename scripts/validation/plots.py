@@ -252,8 +252,8 @@ def lock_exchange(ax, items):
     the lock, in units of H, against t* = t sqrt(g'/H), with the slope Fr = 1/2 of the
     energy-conserving light current (dashed) through the light front's mean point over the fitted
     window."""
-    depth = 0.2
     for r, c in items:
+        depth = c["depth"]
         line = ax.plot(c["t_star"], c["light"] / depth, "o-", ms=3, lw=0.8, label=_label(r) + ", light front")[0]
         ax.plot(c["t_star"], c["dense"] / depth, "x--", ms=3, lw=0.6, color=line.get_color(),
                 label=_label(r) + ", dense front")
