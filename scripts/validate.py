@@ -152,12 +152,16 @@ def rung_key(study, r):
 RUNS_FOLDER = {s["id"]: s.get("runs", s["id"]) for s in STUDIES}   # studies with a "runs" key share a run
 
 
+def run_key(study_id, label, dx, np_):
+    """The key of a run (rung_key's fields): the study replaced by its runs folder, so that studies
+    sharing their runs (standing-wave-period and -decay) share it."""
+    return (RUNS_FOLDER.get(study_id, study_id), label, dx, np_)
+
+
 def earlier_seconds(report):
-    """The wall time [s] of each rung that the report in folder `report` records ({} if none), keyed
-    as rung_key but with the study's runs folder for the study: studies that share their runs
-    (standing-wave-period and -decay) share the time, whichever of them the report holds."""
-    return {(RUNS_FOLDER.get(row["study"], row["study"]), row["label"], row["dx"], row["np"]):
-            float(row["wall_seconds"]) for row in read_report(report)[1]}
+    """The wall time [s] of each run that the report in folder `report` records ({} if none), keyed
+    by run_key: whichever of the studies sharing a run the report holds gives its time."""
+    return {run_key(*(row[k] for k in CSV_HEADER[:4])): float(row["wall_seconds"]) for row in read_report(report)[1]}
 
 
 def longest_first(queue, seconds):
@@ -167,7 +171,7 @@ def longest_first(queue, seconds):
     behind it start first: run_packed)."""
     def known(item):
         s, r, _ = item
-        return seconds.get((RUNS_FOLDER[s["id"]],) + rung_key(s, r)[1:], math.inf)
+        return seconds.get(run_key(*rung_key(s, r)), math.inf)
     return sorted(queue, key=known, reverse=True)
 
 

@@ -1225,14 +1225,14 @@ def sloshing_growth(run, dx, gauge="WG", length=0.57, amplitude=0.005, omega=6.0
 
 # --- non-Boussinesq lock exchange (Lowe et al. 2005 set-up; paper 004 section 4.4) -----------
 
-def lock_exchange_fronts(run, dx, x_lock=0.905, depth=0.2):
+def lock_exchange_fronts(run, dx, vertical, x_lock=0.905, depth=0.2):
     """Rows (t [s], light front x [m], dense front x [m]) of the snapshots of a lock exchange with
     the light phase (phase 0) left of x_lock. A window 2 dx wide slides along x in steps of dx/8:
     the light front is the rightmost window centre where the light phase is at least half of the
     window's particles in the top quarter of the depth (along the lid), the dense front the
     leftmost one where the dense phase is at least half of those in the bottom quarter (along the
-    floor). The sliding window keeps the fronts from snapping to a fixed grid of columns."""
-    vertical = int(read_config(run)["dimension"]) - 1
+    floor). The sliding window keeps the fronts from snapping to a fixed grid of columns. vertical:
+    the index of the up axis (dimension - 1)."""
     rows = []
     for path in snapshots(run):
         t, s = read_snapshot(path)
@@ -1259,10 +1259,11 @@ def lock_exchange_front(run, dx, depth=0.2, t_star_fit=1.5, x_lock=0.905):
     the depth, which the light current of a full-depth lock exchange is in the two-layer theory
     Lowe et al. (2005) retain (cases/lock-exchange-3d/reference/README.md). Notes: Fr_L, the dense
     front's Fr_D, both fronts' distances from the lock at t* = 3 and at the end."""
-    light_phase, dense_phase = read_config(run)["phases"][:2]
+    config = read_config(run)
+    light_phase, dense_phase = config["phases"][:2]
     g_reduced = G * (1 - float(light_phase["rho0"]) / float(dense_phase["rho0"]))
     u_scale, t_scale = math.sqrt(g_reduced * depth), math.sqrt(depth / g_reduced)
-    rows = lock_exchange_fronts(run, dx, x_lock, depth)
+    rows = lock_exchange_fronts(run, dx, int(config["dimension"]) - 1, x_lock, depth)
     t_star, light, dense = rows[:, 0] / t_scale, rows[:, 1] - x_lock, x_lock - rows[:, 2]
     fit = t_star >= t_star_fit
     if np.count_nonzero(fit) < 3:
