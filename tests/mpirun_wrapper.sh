@@ -3,7 +3,8 @@
 # scripts/mpirun leaves its ranks free to run on any core the caller may use (--bind-to none), so
 # runs started side by side (make validate JOBS=N) spread over the cores instead of all sitting on
 # the first one, where Open MPI binds the ranks of a small job; MPSPH_BIND=core forces core binding,
-# also with more ranks than cores; a bad command line exits with status 1.
+# also with more ranks than cores and after a qualifier of its own; the cores are counted as Open
+# MPI counts its slots (physical cores, not hardware threads); a bad command line exits with status 1.
 set -u
 cd "$(dirname "$0")/.."
 unset OMPI_MCA_hwloc_base_binding_policy   # scripts/run-tests sets it for its own runs
@@ -41,6 +42,27 @@ else
   echo "FAIL: MPSPH_BIND=core with $over ranks on $(nproc) cores failed"
   fail=1
 fi
+if MPSPH_BIND=core:if-supported scripts/mpirun -n "$over" true > /dev/null 2>&1; then
+  echo "ok: MPSPH_BIND=core:if-supported with $over ranks runs (the overload qualifier after the policy's own)"
+else
+  echo "FAIL: MPSPH_BIND=core:if-supported with $over ranks on $(nproc) cores failed"
+  fail=1
+fi
+# scripts/count-cores counts physical cores (Open MPI's slots), not hardware threads: four CPUs on
+# two cores of one package, and CPUs without a readable topology each as a core
+topo=$(mktemp -d)
+for cpu in 0 1 2 3; do
+  mkdir -p "$topo/cpu$cpu/topology"
+  echo 0 > "$topo/cpu$cpu/topology/physical_package_id"
+  echo $((cpu % 2)) > "$topo/cpu$cpu/topology/core_id"
+done
+for case in "0-3 2" "0,2 1" "0-1,3 2" "0-5 4"; do
+  set -- $case
+  got=$(scripts/count-cores "$1" "$topo")
+  if [ "$got" = "$2" ]; then echo "ok: CPUs $1 of 2 cores x 2 threads -> $got cores"
+  else echo "FAIL: CPUs $1 of 2 cores x 2 threads -> $got cores, expected $2"; fail=1; fi
+done
+rm -rf "$topo"
 scripts/mpirun true > /dev/null 2>&1
 status=$?
 if [ "$status" -eq 1 ]; then echo "ok: usage error -> 1"; else echo "FAIL: usage error gave $status"; fail=1; fi
