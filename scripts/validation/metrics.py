@@ -25,6 +25,17 @@ def snapshot_time(path):
         return float(f["header"].attrs["time"])
 
 
+def spaced(times, gap):
+    """Indices of the times (ascending) kept when each must follow the last kept by at least gap:
+    a run's final snapshot (written at time.end) can lie just after the last one of its output
+    interval, and two nearly equal times would weigh that instant twice in a fit."""
+    keep = [0] if len(times) else []
+    for k in range(1, len(times)):
+        if times[k] - times[keep[-1]] >= gap:
+            keep.append(k)
+    return np.array(keep, dtype=int)
+
+
 def read_snapshot(path):
     """Time [s] and the fluid particles (phase >= 0) of a snapshot: dict of arrays."""
     with h5py.File(path, "r") as f:
@@ -1257,13 +1268,15 @@ def lock_exchange_front(run, dx, depth=0.2, t_star_fit=1.5, x_lock=0.905):
     t_star_fit (after the release's acceleration), g' = g (1 - rho_light / rho_dense) with the two
     phases' rho0 from the run's config. 1/2 is Benjamin's (1968) energy-conserving current of half
     the depth, which the light current of a full-depth lock exchange is in the two-layer theory
-    Lowe et al. (2005) retain (cases/lock-exchange-3d/reference/README.md). Notes: Fr_L, the dense
-    front's Fr_D, both fronts' distances from the lock at t* = 3 and at the end."""
+    Lowe et al. (2005) retain (cases/lock-exchange-3d/reference/README.md). The snapshots at least
+    half an output interval apart (spaced). Notes: Fr_L, the dense front's Fr_D, both fronts'
+    distances from the lock at t* = 3 and at the end."""
     config = read_config(run)
     light_phase, dense_phase = config["phases"][:2]
     g_reduced = G * (1 - float(light_phase["rho0"]) / float(dense_phase["rho0"]))
     u_scale, t_scale = math.sqrt(g_reduced * depth), math.sqrt(depth / g_reduced)
     rows = lock_exchange_fronts(run, dx, int(config["dimension"]) - 1, x_lock, depth)
+    rows = rows[spaced(rows[:, 0], 0.5 * float(config["output"]["interval"]))]
     t_star, light, dense = rows[:, 0] / t_scale, rows[:, 1] - x_lock, x_lock - rows[:, 2]
     fit = t_star >= t_star_fit
     if np.count_nonzero(fit) < 3:

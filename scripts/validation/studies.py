@@ -471,8 +471,11 @@ STUDIES.append({
     # quick: H/dx = 11 to 1.0 s on 1 rank (700 steps, 714 s on this loaded machine); the full 6 s at
     # H/dx = 11, 22, 44 is for the Slurm array: about 1.2, 10 and 100 core-hours
     # (cases/dambreak-3d-kleefsman/README.md)
+    # CHEAP at the quick rung's dx: what the Gaussian's support (about 3.4 times Wendland C2's pairs in
+    # 3D) and CFL 1 buy in 3D (issue 23)
     "rungs": [rung(0.05, 1, True, label="delta-plus, to 1.0 s", **KLEEF_QUICK),
-              rung(0.05, 2), rung(0.025, 8), rung(0.0125, 32)],
+              rung(0.05, 2), rung(0.025, 8), rung(0.0125, 32),
+              rung(0.05, 1, label=CHEAP_LABEL + ", to 1.0 s", **CHEAP, **KLEEF_QUICK)],
     "plot": "kleefsman",
 })
 
@@ -500,11 +503,13 @@ STUDIES.append({
                                 levels=DATA.format(case="dambreak-3d-lobovsky", file=LOBOVSKY_DATA[0]),
                                 pressures=DATA.format(case="dambreak-3d-lobovsky", file=LOBOVSKY_DATA[1])),
     # quick: water only, H/dx = 10 on 1 rank (1075 steps, 245 s on this loaded machine); the water-air
-    # case (about 15 000 steps at dx = 0.03 m) for the Slurm array (cases/dambreak-3d-lobovsky/README.md)
+    # case (about 15 000 steps at dx = 0.03 m) for the Slurm array (cases/dambreak-3d-lobovsky/README.md);
+    # last, CHEAP at the quick rung's dx (issue 23)
     "rungs": [rung(dx, n, q, label=WATER_ONLY_LABEL, **WATER_ONLY, **LOBOVSKY_SPAN)
               for dx, n, q in ((0.03, 1, True), (0.015, 2, False), (0.01, 4, False), (0.005, 16, False))] +
              [rung(dx, n, label="delta-plus, water-air, to 1.25 s", **LOBOVSKY_SPAN)
-              for dx, n in ((0.03, 2), (0.015, 8), (0.01, 16), (0.005, 32))],
+              for dx, n in ((0.03, 2), (0.015, 8), (0.01, 16), (0.005, 32))] +
+             [rung(0.03, 1, label="%s, water only, to 1.25 s" % CHEAP_LABEL, **CHEAP, **WATER_ONLY, **LOBOVSKY_SPAN)],
     "plot": "lobovsky",
 })
 
