@@ -37,24 +37,18 @@ if [ "$(nproc)" -gt 1 ]; then   # a core may hold several hardware threads (e.g.
 fi
 cores=$(scripts/count-cores)
 over=$((cores + 1))
-if scripts/mpirun -n "$over" true > /dev/null 2>&1; then
-  echo "ok: $over ranks on $cores cores run (oversubscribed)"
-else
-  echo "FAIL: $over ranks on $cores cores failed"
-  fail=1
-fi
-if MPSPH_BIND=core scripts/mpirun -n "$over" true > /dev/null 2>&1; then
-  echo "ok: MPSPH_BIND=core with $over ranks on $cores cores runs (overload allowed)"
-else
-  echo "FAIL: MPSPH_BIND=core with $over ranks on $cores cores failed"
-  fail=1
-fi
-if MPSPH_BIND=core:if-supported scripts/mpirun -n "$over" true > /dev/null 2>&1; then
-  echo "ok: MPSPH_BIND=core:if-supported with $over ranks runs (the overload qualifier after the policy's own)"
-else
-  echo "FAIL: MPSPH_BIND=core:if-supported with $over ranks on $cores cores failed"
-  fail=1
-fi
+# runs_over POLICY: $over ranks run with MPSPH_BIND=POLICY (empty: the wrapper's default)
+runs_over() {
+  if MPSPH_BIND=$1 scripts/mpirun -n "$over" true > /dev/null 2>&1; then
+    echo "ok: MPSPH_BIND='$1' with $over ranks on $cores cores runs"
+  else
+    echo "FAIL: MPSPH_BIND='$1' with $over ranks on $cores cores failed"
+    fail=1
+  fi
+}
+runs_over ""                 # oversubscribed
+runs_over core               # the overload qualifier added
+runs_over core:if-supported  # ... after the policy's own
 # scripts/count-cores counts physical cores (Open MPI's slots), not hardware threads: four CPUs on
 # two cores of one package (one file without a final newline), and CPUs without a readable
 # topology each as a core
