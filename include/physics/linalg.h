@@ -38,4 +38,36 @@ static inline double linalg_min_eigenvalue(int dim, const double *m) {
   return q + 2 * p * cos(phi + 2.0 * 3.14159265358979323846 / 3.0);
 }
 
+/** det(M) of a dim x dim matrix (row-major). */
+static inline double linalg_det(int dim, const double *m) {
+  if (dim == 2) return m[0] * m[3] - m[1] * m[2];
+  return m[0] * (m[4] * m[8] - m[5] * m[7]) + m[1] * (m[5] * m[6] - m[3] * m[8]) +
+         m[2] * (m[3] * m[7] - m[4] * m[6]);
+}
+
+/** inv = M^-1 of a dim x dim matrix (row-major); returns det(M) (inv is inf/nan if 0). */
+static inline double linalg_inverse(int dim, const double *m, double *inv) {
+  double det = linalg_det(dim, m);
+  if (dim == 2) {
+    inv[0] = m[3] / det, inv[1] = -m[1] / det, inv[2] = -m[2] / det, inv[3] = m[0] / det;
+    return det;
+  }
+  for (int r = 0; r < 3; r++)
+    for (int c = 0; c < 3; c++) {   /* inv[r][c] = cofactor of m[c][r] / det */
+      int r1 = (c + 1) % 3, r2 = (c + 2) % 3, c1 = (r + 1) % 3, c2 = (r + 2) % 3;
+      inv[3 * r + c] = (m[3 * r1 + c1] * m[3 * r2 + c2] - m[3 * r1 + c2] * m[3 * r2 + c1]) / det;
+    }
+  return det;
+}
+
+/** out = A B (transpose_a: A^T B) of dim x dim matrices (row-major); out is not A or B. */
+static inline void linalg_matmul(int dim, const double *a, int transpose_a, const double *b, double *out) {
+  for (int r = 0; r < dim; r++)
+    for (int c = 0; c < dim; c++) {
+      double sum = 0;
+      for (int k = 0; k < dim; k++) sum += (transpose_a ? a[k * dim + r] : a[r * dim + k]) * b[k * dim + c];
+      out[r * dim + c] = sum;
+    }
+}
+
 #endif

@@ -1,0 +1,406 @@
+/* test_elastic_solid.c — the total-Lagrangian elastic solid (src/physics/elastic_solid.c):
+ *  1. the stress models: P = dpsi/dF (central differences of the energy density) at a finite
+ *     strain, both models, 2D and 3D; the linear-elastic stress at small strain; zero stress for a
+ *     rotation;
+ *  2. on a block of particles (2D and 3D, both corrections): dF/dt of a linear velocity field is
+ *     its gradient at every particle, and with the quadratic correction that of a quadratic field
+ *     too (also at the edges), as are its second derivatives from the Hessian weights; a rigidly
+ *     rotated block (F = R) has no acceleration; for any x, F and v field the pair forces (damping
+ *     on) sum to zero (momentum, to round-off); the time-step limit of Eq. P-29 with its step
+ *     length (0.360 h in 2D, 0.343 h in 3D for the quadratic correction); the stress force is minus the gradient of the
+ *     strain energy (central differences of elastic_energy) at a corner, an edge and the centre of
+ *     a randomly deformed block, both models;
+ *  3. a cantilever plate clamped at one end (the oscillating plate of Gray, Monaghan & Swift 2001,
+ *     CMAME 190: H = 0.02 m, rho0 = 1000 kg/m^3, E = 2 MPa, nu = 0.3975; 6 particles through the
+ *     thickness, quadratic correction) released with the first mode's velocity profile: at
+ *     L/H = 20 its period is the Euler–Bernoulli one of plane strain,
+ *     T = 2 pi / omega, omega^2 = E H^2 k^4 / (12 rho0 (1 - nu^2)), k L = 1.8751, within 3 %, and
+ *     its energy stays within 0.1 % over 1.1 periods; at L/H = 10 with the damping of paper 002's
+ *     cases (0.25, notes §1.9) it loses energy, more than ten times that change and less than 1 %
+ *     per period;
+ *  4. the plate at L/H = 20 under a uniform pressure q on its top face, relaxed to rest, deflects
+ *     at the tip as the static Euler–Bernoulli cantilever, w = q L^4 / (8 E' I) with
+ *     E' = E / (1 - nu^2), I = H^3/12, within 3 %.
+ * Usage: test_elastic_solid [--table] (--table: the convergence table of doc/theory.md §13, both
+ * corrections at 4, 6 and 10 layers; a few minutes; no checks). */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include "check.h"
+#include "physics/elastic_solid.h"
+
+#define PI 3.14159265358979323846
+
+static const struct elastic_material plate_rubber = {ELASTIC_SVK, 1000.0, 2.0e6, 0.3975, 0.0,
+                                                     ELASTIC_CORRECTION_QUADRATIC};
+
+/* 1. Stress models against the energy density and the linear limit. */
+static void check_stress_models(void) {
+  const double lambda = 3.0e6, shear = 1.2e6, eps = 1e-6;
+  const double F2[4] = {1.1, 0.2, -0.05, 0.93}, F3[9] = {1.05, 0.1, 0.0, -0.07, 0.96, 0.03, 0.02, -0.04, 1.12};
+  for (int model = 0; model < ELASTIC_MODEL_COUNT; model++)
+    for (int dim = 2; dim <= 3; dim++) {
+      const double *F = dim == 2 ? F2 : F3;
+      double P[9], worst = 0, scale = 0;
+      elastic_pk1(dim, model, lambda, shear, F, P);
+      for (int r = 0; r < dim * dim; r++) {
+        double Fp[9], Fm[9];
+        memcpy(Fp, F, sizeof(double) * dim * dim), memcpy(Fm, F, sizeof(double) * dim * dim);
+        Fp[r] += eps, Fm[r] -= eps;
+        double dpsi = (elastic_energy_density(dim, model, lambda, shear, Fp) -
+                       elastic_energy_density(dim, model, lambda, shear, Fm)) / (2 * eps);
+        worst = fmax(worst, fabs(dpsi - P[r])), scale = fmax(scale, fabs(P[r]));
+      }
+      CHECK(worst < 1e-6 * scale, "%s %dD: P differs from dpsi/dF by %g (|P| %g)", elastic_model_name(model),
+            dim, worst, scale);
+      /* small symmetric strain e: P = lambda tr(e) I + 2 G e to first order */
+      double e[9] = {2e-7, 1e-7, 0, 1e-7, -3e-7, 0.5e-7, 0, 0.5e-7, 1e-7}, Fs[9], Ps[9];
+      for (int r = 0; r < dim; r++)
+        for (int c = 0; c < dim; c++) Fs[r * dim + c] = (r == c) + e[r * 3 + c];
+      elastic_pk1(dim, model, lambda, shear, Fs, Ps);
+      double tr = 0, err = 0;
+      for (int d = 0; d < dim; d++) tr += e[d * 3 + d];
+      for (int r = 0; r < dim; r++)
+        for (int c = 0; c < dim; c++) {
+          double linear = 2 * shear * e[r * 3 + c] + (r == c) * lambda * tr;
+          err = fmax(err, fabs(Ps[r * dim + c] - linear));
+        }
+      CHECK(err < 1e-6 * 2 * shear * 3e-7, "%s %dD: small-strain stress off the linear law by %g Pa",
+            elastic_model_name(model), dim, err);
+      double R[9] = {cos(0.7), -sin(0.7), 0, sin(0.7), cos(0.7), 0, 0, 0, 1}, R2[4] = {R[0], R[1], R[3], R[4]}, Pr[9];
+      elastic_pk1(dim, model, lambda, shear, dim == 2 ? R2 : R, Pr);
+      double largest = 0;
+      for (int r = 0; r < dim * dim; r++) largest = fmax(largest, fabs(Pr[r]));
+      CHECK(largest < 1e-9 * shear, "%s %dD: a rotation is stressed (%g Pa)", elastic_model_name(model), dim, largest);
+    }
+}
+
+/* A block of nx x ny (x nz) particles of spacing dx, Wendland C2 at h = 1.3 dx. */
+static int make_block(struct elastic_solid *s, int dim, int nx, int ny, int nz, double dx,
+                      const struct elastic_material *mat, double x_offset) {
+  int n = nx * ny * (dim == 3 ? nz : 1);
+  double *x0 = malloc(sizeof(double) * n * dim);
+  for (int i = 0, a = 0; i < (dim == 3 ? nz : 1); i++)
+    for (int j = 0; j < ny; j++)
+      for (int l = 0; l < nx; l++, a++) {
+        x0[a * dim] = x_offset + (l + 0.5) * dx, x0[a * dim + 1] = (j + 0.5) * dx;
+        if (dim == 3) x0[a * dim + 2] = (i + 0.5) * dx;
+      }
+  int status = elastic_solid_init(s, dim, n, x0, dx, KERNEL_WENDLAND_C2, 1.3 * dx, mat);
+  free(x0);
+  return status;
+}
+
+/* 2. The discrete operators on a block, with the given correction. */
+static void check_block(int dim, enum elastic_correction correction) {
+  struct elastic_solid s;
+  struct elastic_material mat = plate_rubber;
+  mat.correction = correction;
+  const double dx = 0.01, A[9] = {0.3, -0.2, 0.1, 0.05, -0.4, 0.2, 0.15, 0.1, 0.25};
+  const double zero_g[3] = {0, 0, 0};
+  CHECK(make_block(&s, dim, 7, 6, 5, dx, &mat, 0.0) == 0, "%dD block: init", dim);
+  const int dd = dim * dim;
+  /* dF/dt of v = A x0 is A everywhere */
+  for (int a = 0; a < s.n; a++)
+    for (int r = 0; r < dim; r++) {
+      s.v[a * dim + r] = 0;
+      for (int c = 0; c < dim; c++) s.v[a * dim + r] += A[r * 3 + c] * s.x0[a * dim + c];
+    }
+  elastic_deformation_rate(&s);
+  double err = 0;
+  for (int a = 0; a < s.n; a++)
+    for (int r = 0; r < dim; r++)
+      for (int c = 0; c < dim; c++) err = fmax(err, fabs(s.dF[a * dd + r * dim + c] - A[r * 3 + c]));
+  CHECK(err < 1e-12, "%dD block, %s: dF/dt of a linear velocity field off its gradient by %g", dim,
+        elastic_correction_name(correction), err);
+  if (correction == ELASTIC_CORRECTION_QUADRATIC) {   /* v_r = x0 . A_r x0: dF/dt = (A_r + A_r^T) x0 */
+    for (int a = 0; a < s.n; a++)
+      for (int r = 0; r < dim; r++) {
+        s.v[a * dim + r] = 0;
+        for (int i = 0; i < dim; i++)
+          for (int j = 0; j < dim; j++) s.v[a * dim + r] += A[(r + i) % 3 * 3 + j] * s.x0[a * dim + i] * s.x0[a * dim + j];
+      }
+    elastic_deformation_rate(&s);
+    err = 0;
+    for (int a = 0; a < s.n; a++)
+      for (int r = 0; r < dim; r++)
+        for (int c = 0; c < dim; c++) {
+          double exact = 0;
+          for (int j = 0; j < dim; j++) exact += (A[(r + c) % 3 * 3 + j] + A[(r + j) % 3 * 3 + c]) * s.x0[a * dim + j];
+          err = fmax(err, fabs(s.dF[a * dd + r * dim + c] - exact));
+        }
+    CHECK(err < 1e-11, "%dD block, quadratic: dF/dt of a quadratic velocity field off its gradient by %g", dim, err);
+    err = 0;   /* the Hessian weights: sum_b (v_b - v_a) H_ab,kj = d^2 v / dx_k dx_j = A_(r+k) + A_(r+k)^T */
+    for (int a = 0; a < s.n; a++)
+      for (int r = 0; r < dim; r++)
+        for (int k = 0; k < dim; k++)
+          for (int j = 0; j < dim; j++) {
+            double sum = 0, exact = A[(r + k) % 3 * 3 + j] + A[(r + j) % 3 * 3 + k];
+            for (int p = s.nb_first[a]; p < s.nb_first[a + 1]; p++)
+              sum += (s.v[s.nb[p] * dim + r] - s.v[a * dim + r]) * s.nb_hess[(p * dim + k) * dim + j];
+            err = fmax(err, fabs(sum - exact));
+          }
+    CHECK(err < 1e-9, "%dD block, quadratic: second derivatives of a quadratic field off by %g", dim, err);
+  }
+  /* a rigid rotation: F = R, x = R x0, v = 0, no acceleration */
+  double c = cos(0.9), sn = sin(0.9), R[9] = {c, -sn, 0, sn, c, 0, 0, 0, 1};
+  for (int a = 0; a < s.n; a++) {
+    for (int r = 0; r < dim; r++) {
+      s.v[a * dim + r] = 0;
+      s.x[a * dim + r] = 0;
+      for (int k = 0; k < dim; k++) s.x[a * dim + r] += R[r * 3 + k] * s.x0[a * dim + k];
+      for (int k = 0; k < dim; k++) s.F[a * dd + r * dim + k] = R[r * 3 + k];
+    }
+  }
+  elastic_acceleration(&s, zero_g);
+  double largest = 0;
+  for (int i = 0; i < s.n * dim; i++) largest = fmax(largest, fabs(s.acc[i]));
+  CHECK(largest < 1e-6, "%dD block: a rotated block accelerates (%g m/s^2)", dim, largest);
+  /* any x, F and v field: the pair forces cancel (damping on) */
+  s.mat.damping = 0.25;
+  srand(7);
+  for (int i = 0; i < s.n * dim; i++) s.x[i] = s.x0[i] + 0.1 * dx * (rand() / (double)RAND_MAX - 0.5);
+  for (int i = 0; i < s.n * dd; i++) s.F[i] = (i % (dim + 1) == 0) + 0.05 * (rand() / (double)RAND_MAX - 0.5);
+  for (int i = 0; i < s.n * dim; i++) s.v[i] = rand() / (double)RAND_MAX - 0.5;
+  elastic_acceleration(&s, zero_g);
+  double momentum[3] = {0, 0, 0}, scale = 0;
+  for (int a = 0; a < s.n; a++)
+    for (int d = 0; d < dim; d++) momentum[d] += s.mass * s.acc[a * dim + d], scale += s.mass * fabs(s.acc[a * dim + d]);
+  for (int d = 0; d < dim; d++)
+    CHECK(fabs(momentum[d]) < 1e-13 * scale, "%dD block: the pair forces sum to %g along %d (of %g)", dim,
+          momentum[d], d, scale);
+  /* the time step (Eq. P-29): acoustic with v = acc = 0 */
+  memset(s.v, 0, sizeof(double) * s.n * dim), memset(s.acc, 0, sizeof(double) * s.n * dim);
+  if (correction == ELASTIC_CORRECTION_LINEAR) CHECK_CLOSE(s.step_length, 1.3 * dx, 1e-15, "linear: step length h");
+  else   /* 0.36 h in 2D, 0.343 h in 3D (doc/theory.md §13) */
+    CHECK(fabs(s.step_length / (1.3 * dx) - (dim == 2 ? 0.360 : 0.343)) < 0.002, "quadratic %dD: step length %g h", dim,
+          s.step_length / (1.3 * dx));
+  CHECK_CLOSE(elastic_time_step(&s), 0.6 * s.step_length / s.c_s, 1e-15, "time step at rest");
+  s.acc[0] = 1e9;
+  CHECK_CLOSE(elastic_time_step(&s), 0.6 * sqrt(1.3 * dx / 1e9), 1e-15, "time step limited by acceleration");
+  elastic_solid_free(&s);
+}
+
+/* F of every particle from the positions: I + sum_b (u_b - u_a) (x) g_ab. */
+static void deformation_from_positions(struct elastic_solid *s) {
+  const int dim = s->dim;
+  for (int a = 0; a < s->n; a++)
+    for (int r = 0; r < dim; r++)
+      for (int c = 0; c < dim; c++) {
+        double sum = r == c;
+        for (int p = s->nb_first[a]; p < s->nb_first[a + 1]; p++) {
+          int b = s->nb[p];
+          sum += (s->x[b * dim + r] - s->x0[b * dim + r] - s->x[a * dim + r] + s->x0[a * dim + r]) * s->nb_g[p * dim + c];
+        }
+        s->F[(a * dim + r) * dim + c] = sum;
+      }
+}
+
+/* 2b. The stress force is minus the gradient of the strain energy (central differences of
+ * elastic_energy with F from the positions) at a corner, an edge and an inner particle of a block
+ * deformed at random by up to 5 % of dx, for the given correction and model. */
+static void check_energy_gradient(int dim, enum elastic_correction correction, enum elastic_model model) {
+  struct elastic_solid s;
+  struct elastic_material mat = plate_rubber;
+  mat.correction = correction, mat.model = model;
+  const double dx = 0.01, eps = 1e-7 * dx, zero_g[3] = {0, 0, 0};
+  int init = make_block(&s, dim, 7, 7, 7, dx, &mat, 0.0);
+  CHECK(init == 0, "%dD energy-gradient block: init", dim);
+  if (init != 0) return;
+  srand(11);
+  for (int i = 0; i < s.n * dim; i++) s.x[i] += 0.05 * dx * (rand() / (double)RAND_MAX - 0.5);
+  deformation_from_positions(&s);
+  elastic_acceleration(&s, zero_g);
+  int probes[3] = {0, 2, 3 * 7 + 3 + (dim == 3 ? 3 * 49 : 0)};   /* a corner, an edge, the centre */
+  double worst = 0, scale = 0;
+  for (int k = 0; k < 3; k++)
+    for (int d = 0; d < dim; d++) {
+      size_t i = (size_t)probes[k] * dim + d;
+      double x = s.x[i], energy[2];
+      for (int side = 0; side < 2; side++) {
+        s.x[i] = x + (side ? eps : -eps);
+        deformation_from_positions(&s);
+        energy[side] = elastic_energy(&s);
+      }
+      s.x[i] = x;
+      double force = -(energy[1] - energy[0]) / (2 * eps);
+      worst = fmax(worst, fabs(force - s.mass * s.acc[i])), scale = fmax(scale, fabs(force));
+    }
+  CHECK(worst < 1e-5 * scale, "%dD %s, %s: the force differs from -dE/dx by %g (of %g)", dim,
+        elastic_correction_name(correction), elastic_model_name(model), worst, scale);
+  elastic_solid_free(&s);
+}
+
+/* A plate clamped at x < 0: its free length and thickness [m], particle layers and material. */
+struct plate {
+  double length, thickness;
+  int layers;
+  struct elastic_material mat;
+};
+
+/* The plate of Gray et al. (thickness 0.02 m) with the given length, layers, correction, damping. */
+static struct plate gray_plate(double length, int layers, enum elastic_correction correction, double damping) {
+  struct plate out = {length, 0.02, layers, plate_rubber};
+  out.mat.correction = correction, out.mat.damping = damping;
+  return out;
+}
+
+/* The plate's particles: its length beyond a clamp of 4 columns (x < 0), centred on y = 0. */
+static int make_cantilever(struct elastic_solid *s, const struct plate *plate) {
+  const double dx = plate->thickness / plate->layers;
+  int columns = (int)lround(plate->length / dx) + 4;
+  if (make_block(s, 2, columns, plate->layers, 1, dx, &plate->mat, -4 * dx) != 0) return -1;
+  for (int a = 0; a < s->n; a++) {
+    s->x0[a * 2 + 1] -= 0.5 * plate->thickness, s->x[a * 2 + 1] -= 0.5 * plate->thickness;
+    s->clamped[a] = s->x0[a * 2] < 0;
+  }
+  return 0;
+}
+
+/* Mean vertical displacement of the last column (the tip). */
+static double tip_deflection(const struct elastic_solid *s) {
+  double sum = 0, x_end = -INFINITY;
+  int count = 0;
+  for (int a = 0; a < s->n; a++) x_end = fmax(x_end, s->x0[a * 2]);
+  for (int a = 0; a < s->n; a++)
+    if (s->x0[a * 2] > x_end - 1e-9) sum += s->x[a * 2 + 1] - s->x0[a * 2 + 1], count++;
+  return sum / count;
+}
+
+/* The first bending mode's shape of a clamped-free beam at x (k the wave number). */
+static double mode_shape(double k, double length, double x) {
+  double kl = k * length;
+  return (sin(kl) + sinh(kl)) * (cos(k * x) - cosh(k * x)) - (cos(kl) + cosh(kl)) * (sin(k * x) - sinh(k * x));
+}
+
+/* What a free vibration measured. */
+struct vibration {
+  double period, period_eb;       /* from the tip's zero crossings; Euler–Bernoulli's [s] */
+  double energy_change;           /* largest |E - E0| / E0 */
+  double energy_loss_per_period;  /* (E0 - E_end) / E0 per Euler–Bernoulli period */
+};
+
+/* Release a cantilever with the first mode's velocity (tip speed 0.01 c_s) and run `periods`
+ * Euler–Bernoulli periods. */
+static struct vibration free_vibration(const struct plate *plate, double periods) {
+  const double length = plate->length, thickness = plate->thickness, k = 1.875104 / length, g[2] = {0, 0};
+  struct vibration out = {NAN, NAN, NAN, NAN};
+  struct elastic_solid s;
+  if (make_cantilever(&s, plate) != 0) return out;
+  double E_plane = s.mat.young / (1 - s.mat.poisson * s.mat.poisson);
+  double omega = sqrt(E_plane * thickness * thickness * pow(k, 4) / (12 * s.mat.rho0));
+  out.period_eb = 2 * PI / omega;
+  for (int a = 0; a < s.n; a++)
+    if (!s.clamped[a]) s.v[a * 2 + 1] = 0.01 * s.c_s * mode_shape(k, length, s.x0[a * 2]) / mode_shape(k, length, length);
+  elastic_deformation_rate(&s);
+  elastic_acceleration(&s, g);
+  double e0 = elastic_energy(&s), t = 0, w_prev = 0, crossings[64];
+  int n_cross = 0, steps = 0;
+  out.energy_change = 0;
+  while (t < periods * out.period_eb) {
+    double dt = elastic_time_step(&s);
+    elastic_substep(&s, dt, g);
+    t += dt;
+    double w = tip_deflection(&s);
+    if (w_prev != 0 && (w > 0) != (w_prev > 0) && n_cross < 64) crossings[n_cross++] = t - dt * w / (w - w_prev);
+    w_prev = w;
+    if (++steps % 20 == 0) out.energy_change = fmax(out.energy_change, fabs(elastic_energy(&s) - e0) / e0);
+  }
+  if (n_cross >= 2) out.period = 2 * (crossings[n_cross - 1] - crossings[0]) / (n_cross - 1);
+  out.energy_loss_per_period = (e0 - elastic_energy(&s)) / e0 / (t / out.period_eb);
+  elastic_solid_free(&s);
+  return out;
+}
+
+/* 3. The first mode's period of a slender plate (L/H = 20, where Euler–Bernoulli holds) without
+ * damping, and the energy without and with the damping of paper 002's cases (L/H = 10). */
+static void check_cantilever_frequency(void) {
+  struct plate slender = gray_plate(0.4, 6, ELASTIC_CORRECTION_QUADRATIC, 0.0);
+  struct plate damped_plate = gray_plate(0.2, 6, ELASTIC_CORRECTION_QUADRATIC, 0.25);
+  struct vibration plain = free_vibration(&slender, 1.1);
+  printf("cantilever L/H 20, no damping: period %.5f s, Euler-Bernoulli %.5f s (%+.2f %%), "
+         "largest energy change %.4f %%\n",
+         plain.period, plain.period_eb, 100 * (plain.period / plain.period_eb - 1), 100 * plain.energy_change);
+  CHECK(fabs(plain.period / plain.period_eb - 1) < 0.03, "undamped period %g s against %g s", plain.period,
+        plain.period_eb);
+  CHECK(plain.energy_change < 1e-3, "undamped energy changes by %g of its initial value", plain.energy_change);
+  struct vibration damped = free_vibration(&damped_plate, 2.0);
+  printf("cantilever L/H 10, damping 0.25: period %.5f s (%+.2f %% from Euler-Bernoulli), "
+         "energy lost per period %.3f %%\n",
+         damped.period, 100 * (damped.period / damped.period_eb - 1), 100 * damped.energy_loss_per_period);
+  CHECK(damped.energy_loss_per_period > 10 * plain.energy_change && damped.energy_loss_per_period < 0.01,
+        "damped energy loss per period %g (undamped change %g)", damped.energy_loss_per_period, plain.energy_change);
+}
+
+/* The tip deflection over Euler–Bernoulli's, q L^4 / (8 E' I), of a cantilever under a uniform
+ * pressure q on its top face, relaxed to rest by a velocity damping of the test's own (critical
+ * for the first mode). */
+static double static_deflection(const struct plate *plate) {
+  const double length = plate->length, thickness = plate->thickness, q = 0.2, g[2] = {0, 0};
+  struct elastic_solid s;
+  if (make_cantilever(&s, plate) != 0) return NAN;
+  double y_top = -INFINITY;
+  for (int a = 0; a < s.n; a++) y_top = fmax(y_top, s.x0[a * 2 + 1]);
+  for (int a = 0; a < s.n; a++)
+    if (!s.clamped[a] && s.x0[a * 2 + 1] > y_top - 1e-9) s.acc_ext[a * 2 + 1] = -q * s.dx / s.mass;
+  double E_plane = s.mat.young / (1 - s.mat.poisson * s.mat.poisson), inertia = pow(thickness, 3) / 12;
+  double w_eb = -q * pow(length, 4) / (8 * E_plane * inertia);
+  double k = 1.875104 / length, omega = sqrt(E_plane * inertia * pow(k, 4) / (s.mat.rho0 * thickness));
+  double t = 0, w = 0, w_prev = 1;
+  elastic_acceleration(&s, g);
+  while (t < 20 / omega && !(t > 8 / omega && fabs(w - w_prev) < 1e-7 * fabs(w_eb))) {
+    double dt = elastic_time_step(&s), relax = exp(-2 * omega * dt);
+    elastic_substep(&s, dt, g);
+    for (int i = 0; i < s.n * 2; i++) s.v[i] *= relax;
+    t += dt;
+    w_prev = w, w = tip_deflection(&s);
+  }
+  elastic_solid_free(&s);
+  return w / w_eb;
+}
+
+/* 4. The static deflection of a plate 0.4 m long (L/H = 20). */
+static void check_static_deflection(void) {
+  struct plate plate = gray_plate(0.4, 6, ELASTIC_CORRECTION_QUADRATIC, 0.0);
+  double ratio = static_deflection(&plate);
+  printf("static cantilever L/H 20: tip deflection %.4f of Euler-Bernoulli's\n", ratio);
+  CHECK(fabs(ratio - 1) < 0.03, "static tip deflection %g of Euler-Bernoulli's", ratio);
+}
+
+/* The tables of doc/theory.md §13 (about 5 minutes): the plate of Gray et al. with both corrections
+ * at 4, 6 and 10 layers, L/H = 20 and 10; the gate of Antoci et al. (paper 002 §4.4: L = 79 mm,
+ * b = 5 mm, rho0 = 1100 kg/m^3, E = 7.8 MPa, nu = 0.47) dry at 4 layers. */
+static void print_table(void) {
+  printf("layers  correction  static w/w_EB (L/H 20)  period/T_EB (L/H 20)  period/T_EB (L/H 10)\n");
+  for (int correction = 0; correction < ELASTIC_CORRECTION_COUNT; correction++)
+    for (int layers = 4; layers <= 10; layers += layers == 4 ? 2 : 4) {
+      struct plate slender = gray_plate(0.4, layers, correction, 0.0), stocky = gray_plate(0.2, layers, correction, 0.0);
+      struct vibration slender_run = free_vibration(&slender, 2.0), stocky_run = free_vibration(&stocky, 2.0);
+      printf("%6d  %10s  %22.4f  %20.4f  %20.4f\n", layers, elastic_correction_name(correction),
+             static_deflection(&slender), slender_run.period / slender_run.period_eb,
+             stocky_run.period / stocky_run.period_eb);
+      fflush(stdout);
+    }
+  for (int correction = 0; correction < ELASTIC_CORRECTION_COUNT; correction++) {
+    struct plate gate = {0.079, 0.005, 4, {ELASTIC_SVK, 1100.0, 7.8e6, 0.47, 0.0, correction}};
+    struct vibration run = free_vibration(&gate, 2.0);
+    printf("gate of Antoci et al., dry, 4 layers, %s: period %.5f s, Euler-Bernoulli %.5f s, ratio %.4f\n",
+           elastic_correction_name(correction), run.period, run.period_eb, run.period / run.period_eb);
+  }
+}
+
+int main(int argc, char **argv) {
+  if (argc > 1 && strcmp(argv[1], "--table") == 0) {
+    print_table();
+    return 0;
+  }
+  check_stress_models();
+  for (int correction = 0; correction < ELASTIC_CORRECTION_COUNT; correction++)
+    for (int dim = 2; dim <= 3; dim++) {
+      check_block(dim, correction);
+      for (int model = 0; model < ELASTIC_MODEL_COUNT; model++) check_energy_gradient(dim, correction, model);
+    }
+  check_cantilever_frequency();
+  check_static_deflection();
+  return check_report("test_elastic_solid");
+}
