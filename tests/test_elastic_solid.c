@@ -10,6 +10,8 @@
  *     length (0.360 h in 2D, 0.343 h in 3D for the quadratic correction); the stress force is minus the gradient of the
  *     strain energy (central differences of elastic_energy) at a corner, an edge and the centre of
  *     a randomly deformed block, both models;
+ *  2c. the reference normals of a block, Nanson's formula under a rotation and a stretch, and the
+ *     fluid step's sub-steps (kappa) and averaged velocity and acceleration on a translation;
  *  3. a cantilever plate clamped at one end (the oscillating plate of Gray, Monaghan & Swift 2001,
  *     CMAME 190: H = 0.02 m, rho0 = 1000 kg/m^3, E = 2 MPa, nu = 0.3975; 6 particles through the
  *     thickness, quadratic correction) released with the first mode's velocity profile: at
@@ -178,6 +180,53 @@ static void check_block(int dim, enum elastic_correction correction) {
   CHECK_CLOSE(elastic_time_step(&s), 0.6 * s.step_length / s.c_s, 1e-15, "time step at rest");
   s.acc[0] = 1e9;
   CHECK_CLOSE(elastic_time_step(&s), 0.6 * sqrt(1.3 * dx / 1e9), 1e-15, "time step limited by acceleration");
+  elastic_solid_free(&s);
+}
+
+/* 2c. Normals and the fluid step on a 2D block of 7 x 7: the reference normal is (0, 1) at the
+ * middle of the top row, zero at the centre; F = R turns the normals by R, F = diag(2, 1) turns a
+ * corner's (n_x, n_y) to (n_x/2, n_y) normalised; a block translating at v through a fluid step of
+ * several sub-steps has v_avg = v and acc_avg = v/dt (from rest), then 0. */
+static void check_normals_and_advance(void) {
+  struct elastic_solid s;
+  const double dx = 0.01, zero_g[2] = {0, 0};
+  int init = make_block(&s, 2, 7, 7, 1, dx, &plate_rubber, 0.0);
+  CHECK(init == 0, "normals block: init");
+  if (init != 0) return;
+  const int top_middle = 6 * 7 + 3, centre = 3 * 7 + 3, corner = 0;
+  CHECK(fabs(s.normal0[top_middle * 2]) < 1e-12 && fabs(s.normal0[top_middle * 2 + 1] - 1) < 1e-12,
+        "top normal (%g, %g)", s.normal0[top_middle * 2], s.normal0[top_middle * 2 + 1]);
+  CHECK(s.normal0[centre * 2] == 0 && s.normal0[centre * 2 + 1] == 0, "centre normal (%g, %g)", s.normal0[centre * 2],
+        s.normal0[centre * 2 + 1]);
+  double c = cos(0.6), sn = sin(0.6), err = 0;
+  for (int a = 0; a < s.n; a++) s.F[a * 4] = c, s.F[a * 4 + 1] = -sn, s.F[a * 4 + 2] = sn, s.F[a * 4 + 3] = c;
+  elastic_update_normals(&s);
+  for (int a = 0; a < s.n; a++) {
+    const double *n0 = s.normal0 + a * 2;
+    err = fmax(err, fabs(s.normal[a * 2] - (c * n0[0] - sn * n0[1])) + fabs(s.normal[a * 2 + 1] - (sn * n0[0] + c * n0[1])));
+  }
+  CHECK(err < 1e-14, "rotated normals off by %g", err);
+  for (int a = 0; a < s.n; a++) s.F[a * 4] = 2, s.F[a * 4 + 1] = s.F[a * 4 + 2] = 0, s.F[a * 4 + 3] = 1;
+  elastic_update_normals(&s);
+  double expect[2] = {0.5 * s.normal0[corner * 2], s.normal0[corner * 2 + 1]}, norm = hypot(expect[0], expect[1]);
+  CHECK(fabs(s.normal[corner * 2] - expect[0] / norm) < 1e-14 && fabs(s.normal[corner * 2 + 1] - expect[1] / norm) < 1e-14,
+        "stretched corner normal (%g, %g)", s.normal[corner * 2], s.normal[corner * 2 + 1]);
+  for (int a = 0; a < s.n; a++) s.F[a * 4] = s.F[a * 4 + 3] = 1, s.F[a * 4 + 1] = s.F[a * 4 + 2] = 0;
+  for (int a = 0; a < s.n; a++) s.v[a * 2] = 1.0, s.v[a * 2 + 1] = -0.5;
+  elastic_deformation_rate(&s);
+  elastic_acceleration(&s, zero_g);
+  const double dt_fluid = 3.5 * elastic_time_step(&s);
+  int kappa = elastic_advance(&s, dt_fluid, zero_g);
+  CHECK(kappa == 4, "kappa %d for a fluid step of 3.5 sub-step limits", kappa);
+  double v_err = 0, a_err = 0;
+  for (int a = 0; a < s.n; a++)
+    v_err = fmax(v_err, fabs(s.v_avg[a * 2] - 1.0) + fabs(s.v_avg[a * 2 + 1] + 0.5)),
+    a_err = fmax(a_err, fabs(s.acc_avg[a * 2] - 1.0 / dt_fluid) + fabs(s.acc_avg[a * 2 + 1] + 0.5 / dt_fluid));
+  CHECK(v_err < 1e-9 && a_err < 1e-9 / dt_fluid, "translation: v_avg off by %g, acc_avg by %g", v_err, a_err);
+  elastic_advance(&s, dt_fluid, zero_g);
+  a_err = 0;
+  for (int i = 0; i < s.n * 2; i++) a_err = fmax(a_err, fabs(s.acc_avg[i]));
+  CHECK(a_err < 1e-9 / dt_fluid, "steady translation: acc_avg %g", a_err);
   elastic_solid_free(&s);
 }
 
@@ -400,6 +449,7 @@ int main(int argc, char **argv) {
       check_block(dim, correction);
       for (int model = 0; model < ELASTIC_MODEL_COUNT; model++) check_energy_gradient(dim, correction, model);
     }
+  check_normals_and_advance();
   check_cantilever_frequency();
   check_static_deflection();
   return check_report("test_elastic_solid");

@@ -56,6 +56,11 @@ struct elastic_solid {
   double *R;              /* scratch (quadratic correction): the strain gradient's conjugates to
                              dF/dX_k, dim^3 per particle [Pa m] */
   unsigned char *clamped; /* 1: held at x0 with v = 0 */
+  double *normal0;        /* reference surface normal (unit, outward; 0 inside) [-] */
+  double *normal;         /* current normal: F^-T normal0 normalised (elastic_update_normals) [-] */
+  double *x_step;         /* positions at the start of the last elastic_advance [m] */
+  double *v_avg, *acc_avg;  /* velocity and acceleration averaged over the last elastic_advance,
+                               the wall's state the fluid sees (notes §1.7) [m/s], [m/s^2] */
   int *nb_first;          /* reference neighbours of a: nb[nb_first[a] .. nb_first[a+1]) */
   int *nb;
   int *nb_reverse;        /* the pair (b, a) of pair (a, b): its index in b's list */
@@ -69,8 +74,9 @@ struct elastic_solid {
 
 /** Set up solid s in dim = 2 or 3 dimensions from n reference positions x0 [m] (dim per particle,
  *  copied) on a lattice of spacing dx [m], with kernel `kind` of smoothing length h [m]: the
- *  reference neighbour list, the gradient weights of mat's correction, F = I, v = 0, nothing
- *  clamped. Returns 0, or -1 with a message on stderr for parameters out of range or a particle
+ *  reference neighbour list, the gradient weights of mat's correction, the reference normals
+ *  (-sum_b V0 grad0_a W_ab normalised, 0 where that sum vanishes to round-off), F = I, v = 0,
+ *  nothing clamped. Returns 0, or -1 with a message on stderr for parameters out of range or a particle
  *  whose weights cannot be formed (too few independent neighbours: the particle is named); s is
  *  then freed. */
 int elastic_solid_init(struct elastic_solid *s, int dim, int n, const double *x0, double dx,
@@ -111,6 +117,15 @@ void elastic_substep(struct elastic_solid *s, double dt, const double *g);
 /** The solid's time-step limit Delta t_s (Eq. P-29, with step_length for h in its acoustic
  *  part) [s] from its current v and acc. */
 double elastic_time_step(const struct elastic_solid *s);
+
+/** Advance the solid by one fluid step dt [s] in kappa = floor(dt / Delta t_s) + 1 equal sub-steps
+ *  (notes §1.10, Delta t_s from elastic_time_step at the start) with acc_ext held, and set
+ *  v_avg = (x_end - x_start)/dt and acc_avg = (v_avg_new - v_avg_old)/dt. Returns kappa. */
+int elastic_advance(struct elastic_solid *s, double dt, const double *g);
+
+/** The current normals from the reference ones by Nanson's formula: F^-T normal0, normalised
+ *  (notes §1.7, A15). */
+void elastic_update_normals(struct elastic_solid *s);
 
 /** Kinetic plus strain energy of the solid [J] (2D: [J/m]), with the strain gradient's energy of
  *  the quadratic correction; gravity's potential not included. */

@@ -355,6 +355,27 @@ static inline __attribute__((always_inline)) void gradient_sum(const struct elas
   }
 }
 
+/* v scaled to unit length in place, or 0 when |v| <= tiny. */
+static void normalise(int dim, double *v, double tiny) {
+  double norm = 0;
+  for (int d = 0; d < dim; d++) norm += v[d] * v[d];
+  norm = sqrt(norm);
+  for (int d = 0; d < dim; d++) v[d] = norm > tiny ? v[d] / norm : 0.0;
+}
+
+/* normal0 = -sum_b V0 grad0_a W_ab normalised (zero inside, where the sum cancels to round-off),
+ * and normal = normal0. */
+static void reference_normals(struct elastic_solid *s) {
+  const int dim = s->dim;
+  for (int a = 0; a < s->n; a++) {
+    double *n0 = s->normal0 + (size_t)a * dim;
+    for (int p = s->nb_first[a]; p < s->nb_first[a + 1]; p++)
+      for (int d = 0; d < dim; d++) n0[d] -= s->vol0 * s->nb_grad0[(size_t)p * dim + d];
+    normalise(dim, n0, 1e-9 / s->k.h);
+  }
+  memcpy(s->normal, s->normal0, sizeof(double) * s->n * dim);
+}
+
 /* A message on stderr and 0 for parameters elastic_solid_init cannot take. */
 static int valid_parameters(int dim, int n, double dx, double h, const struct elastic_material *mat) {
   const char *problem = dim != 2 && dim != 3                          ? "the dimension is not 2 or 3"
@@ -394,17 +415,24 @@ int elastic_solid_init(struct elastic_solid *s, int dim, int n, const double *x0
   s->dF = mem_calloc((size_t)n * dim * dim, sizeof(double), "elastic deformation rates");
   s->P = mem_alloc(mat_bytes, "elastic stresses");
   s->clamped = mem_calloc((size_t)n, 1, "elastic clamp flags");
+  s->normal0 = mem_calloc((size_t)n * dim, sizeof(double), "elastic reference normals");
+  s->normal = mem_calloc((size_t)n * dim, sizeof(double), "elastic normals");
+  s->x_step = mem_calloc((size_t)n * dim, sizeof(double), "elastic step start positions");
+  s->v_avg = mem_calloc((size_t)n * dim, sizeof(double), "elastic averaged velocities");
+  s->acc_avg = mem_calloc((size_t)n * dim, sizeof(double), "elastic averaged accelerations");
   for (int a = 0; a < n; a++)
     for (int r = 0; r < dim * dim; r++) s->F[(size_t)a * dim * dim + r] = r % (dim + 1) == 0;
   if (build_reference_list(s) != 0 || reference_terms(s) != 0) {
     elastic_solid_free(s);
     return -1;
   }
+  reference_normals(s);
   return 0;
 }
 
 void elastic_solid_free(struct elastic_solid *s) {
   double **arrays[] = {&s->x0, &s->x, &s->v, &s->acc, &s->acc_ext, &s->F, &s->dF, &s->P, &s->R,
+                       &s->normal0, &s->normal, &s->x_step, &s->v_avg, &s->acc_avg,
                        &s->nb_g, &s->nb_hess, &s->nb_grad0, &s->nb_w_ratio, &s->nb_r0_sq};
   for (size_t i = 0; i < sizeof arrays / sizeof *arrays; i++) free(*arrays[i]), *arrays[i] = NULL;
   free(s->clamped), free(s->nb_first), free(s->nb), free(s->nb_reverse);
@@ -542,6 +570,33 @@ void elastic_substep(struct elastic_solid *s, double dt, const double *g) {
     if (s->clamped[a]) memcpy(s->x + (size_t)a * dim, s->x0 + (size_t)a * dim, dim * sizeof(double));
   elastic_deformation_rate(s);
   strain(s, 0.5 * dt);
+}
+
+int elastic_advance(struct elastic_solid *s, double dt, const double *g) {
+  const size_t values = (size_t)s->n * s->dim;
+  int kappa = (int)floor(dt / elastic_time_step(s)) + 1;
+  memcpy(s->x_step, s->x, values * sizeof(double));
+  for (int step = 0; step < kappa; step++) elastic_substep(s, dt / kappa, g);
+  for (size_t i = 0; i < values; i++) {
+    double v_avg = (s->x[i] - s->x_step[i]) / dt;
+    s->acc_avg[i] = (v_avg - s->v_avg[i]) / dt;
+    s->v_avg[i] = v_avg;
+  }
+  return kappa;
+}
+
+void elastic_update_normals(struct elastic_solid *s) {
+  const int dim = s->dim, dd = dim * dim;
+  for (int a = 0; a < s->n; a++) {
+    double F_inv[9], *normal = s->normal + (size_t)a * dim;
+    const double *n0 = s->normal0 + (size_t)a * dim;
+    linalg_inverse(dim, s->F + (size_t)a * dd, F_inv);
+    for (int r = 0; r < dim; r++) {   /* (F^-T n0)_r = sum_c F^-1[c][r] n0_c */
+      normal[r] = 0;
+      for (int c = 0; c < dim; c++) normal[r] += F_inv[c * dim + r] * n0[c];
+    }
+    normalise(dim, normal, 0.0);
+  }
 }
 
 double elastic_time_step(const struct elastic_solid *s) {
