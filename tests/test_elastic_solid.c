@@ -7,19 +7,21 @@
  *     too (also at the edges), as are its second derivatives from the Hessian weights; a rigidly
  *     rotated block (F = R) has no acceleration; for any x, F and v field the pair forces (damping
  *     on) sum to zero (momentum, to round-off); the time-step limit of Eq. P-29 with its step
- *     length (0.360 h in 2D, 0.343 h in 3D for the quadratic correction); the stress force is minus the gradient of the
+ *     length (0.360 h in 2D, 0.343 h in 3D for the quadratic correction), below the stability
+ *     limit 2/omega_max of the block clamped on a face (power iteration); the stress force is minus the gradient of the
  *     strain energy (central differences of elastic_energy) at a corner, an edge and the centre of
  *     a randomly deformed block, both models;
- *  2c. the reference normals of a block, Nanson's formula under a rotation and a stretch, and the
- *     fluid step's sub-steps (kappa) and averaged velocity and acceleration on a translation;
+ *  2c. the reference normals of a block, Nanson's formula under a rotation and a stretch (2D) and
+ *     a non-symmetric F (3D), and the fluid step's sub-steps (kappa) and averaged velocity and
+ *     acceleration on a falling block;
  *  3. a cantilever plate clamped at one end (the oscillating plate of Gray, Monaghan & Swift 2001,
  *     CMAME 190: H = 0.02 m, rho0 = 1000 kg/m^3, E = 2 MPa, nu = 0.3975; 6 particles through the
  *     thickness, quadratic correction) released with the first mode's velocity profile: at
  *     L/H = 20 its period is the Euler–Bernoulli one of plane strain,
  *     T = 2 pi / omega, omega^2 = E H^2 k^4 / (12 rho0 (1 - nu^2)), k L = 1.8751, within 3 %, and
- *     its energy stays within 0.1 % over 1.1 periods; at L/H = 10 with the damping of paper 002's
- *     cases (0.25, notes §1.9) it loses energy, more than ten times that change and less than 1 %
- *     per period;
+ *     its energy (sampled every 20 sub-steps) stays within 0.1 % over 1.1 periods; at L/H = 10
+ *     with the damping of paper 002's cases (0.25, notes §1.9) it loses between 0.1 % and 0.5 % of
+ *     its energy per period (measured 0.22 %: the damping acts, and barely on the first mode);
  *  4. the plate at L/H = 20 under a uniform pressure q on its top face, relaxed to rest, deflects
  *     at the tip as the static Euler–Bernoulli cantilever, w = q L^4 / (8 E' I) with
  *     E' = E / (1 - nu^2), I = H^3/12, within 3 %.
@@ -93,6 +95,30 @@ static int make_block(struct elastic_solid *s, int dim, int nx, int ny, int nz, 
   return status;
 }
 
+/* The largest angular frequency [1/s] of s linearised about its reference state (free particles
+ * only): power iteration on u -> -acc(x0 + u) with F = I + grad u, u of 1e-7 dx. */
+static double largest_frequency(struct elastic_solid *s) {
+  const int dim = s->dim, values = s->n * dim;
+  const double zero_g[3] = {0, 0, 0}, amplitude = 1e-7 * s->dx;
+  double *u = malloc(sizeof(double) * values), omega2 = 0;
+  srand(3);
+  for (int i = 0; i < values; i++) u[i] = s->clamped[i / dim] ? 0 : rand() / (double)RAND_MAX - 0.5;
+  for (int iteration = 0; iteration < 2000; iteration++) {
+    double norm = 0;
+    for (int i = 0; i < values; i++) norm += u[i] * u[i];
+    for (int i = 0; i < values; i++) s->v[i] = u[i] * amplitude / sqrt(norm), s->x[i] = s->x0[i] + s->v[i];
+    elastic_deformation_rate(s);   /* grad u, with v standing for u */
+    for (int i = 0; i < values * dim; i++) s->F[i] = (i % (dim * dim)) % (dim + 1) == 0 ? 1 + s->dF[i] : s->dF[i];
+    memset(s->v, 0, sizeof(double) * values);
+    elastic_acceleration(s, zero_g);
+    double acc2 = 0;
+    for (int i = 0; i < values; i++) u[i] = s->clamped[i / dim] ? 0 : -s->acc[i], acc2 += u[i] * u[i];
+    omega2 = sqrt(acc2) / amplitude;
+  }
+  free(u);
+  return sqrt(omega2);
+}
+
 /* 2. The discrete operators on a block, with the given correction. */
 static void check_block(int dim, enum elastic_correction correction) {
   struct elastic_solid s;
@@ -100,7 +126,9 @@ static void check_block(int dim, enum elastic_correction correction) {
   mat.correction = correction;
   const double dx = 0.01, A[9] = {0.3, -0.2, 0.1, 0.05, -0.4, 0.2, 0.15, 0.1, 0.25};
   const double zero_g[3] = {0, 0, 0};
-  CHECK(make_block(&s, dim, 7, 6, 5, dx, &mat, 0.0) == 0, "%dD block: init", dim);
+  int init = make_block(&s, dim, 7, 6, 5, dx, &mat, 0.0);
+  CHECK(init == 0, "%dD block: init", dim);
+  if (init != 0) return;
   const int dd = dim * dim;
   /* dF/dt of v = A x0 is A everywhere */
   for (int a = 0; a < s.n; a++)
@@ -180,16 +208,51 @@ static void check_block(int dim, enum elastic_correction correction) {
   CHECK_CLOSE(elastic_time_step(&s), 0.6 * s.step_length / s.c_s, 1e-15, "time step at rest");
   s.acc[0] = 1e9;
   CHECK_CLOSE(elastic_time_step(&s), 0.6 * sqrt(1.3 * dx / 1e9), 1e-15, "time step limited by acceleration");
+  /* the step is stable: below 2 / omega_max of the linearised block (clamped on its first column) */
+  for (int a = 0; a < s.n; a++) s.clamped[a] = s.x0[a * dim] < dx;
+  double dt_max = 2 / largest_frequency(&s), dt_s = 0.6 * s.step_length / s.c_s;
+  printf("%dD block, %s: stability limit %.4f h/c_s, time step %.4f h/c_s\n", dim, elastic_correction_name(correction),
+         dt_max * s.c_s / s.k.h, dt_s * s.c_s / s.k.h);
+  CHECK(dt_s < dt_max, "%dD %s: time step %g s above the stability limit %g s", dim,
+        elastic_correction_name(correction), dt_s, dt_max);
+  elastic_solid_free(&s);
+}
+
+/* Nanson's formula in 3D under a non-symmetric F: F^T n is parallel to n0 with n a unit vector. */
+static void check_normals_3d(void) {
+  struct elastic_solid s;
+  const double F[9] = {1.2, 0.3, -0.1, 0.05, 0.9, 0.2, -0.15, 0.1, 1.1};
+  int init = make_block(&s, 3, 5, 5, 5, 0.01, &plate_rubber, 0.0);
+  CHECK(init == 0, "3D normals block: init");
+  if (init != 0) return;
+  for (int a = 0; a < s.n; a++) memcpy(s.F + a * 9, F, sizeof F);
+  elastic_update_normals(&s);
+  double err = 0;
+  int surface = 0;
+  for (int a = 0; a < s.n; a++) {
+    const double *n = s.normal + a * 3, *n0 = s.normal0 + a * 3;
+    if (n0[0] == 0 && n0[1] == 0 && n0[2] == 0) continue;
+    double ftn[3], cross[3];
+    for (int c = 0; c < 3; c++) ftn[c] = F[c] * n[0] + F[3 + c] * n[1] + F[6 + c] * n[2];
+    cross[0] = ftn[1] * n0[2] - ftn[2] * n0[1], cross[1] = ftn[2] * n0[0] - ftn[0] * n0[2];
+    cross[2] = ftn[0] * n0[1] - ftn[1] * n0[0];
+    double dot = ftn[0] * n0[0] + ftn[1] * n0[1] + ftn[2] * n0[2];
+    err = fmax(err, fabs(cross[0]) + fabs(cross[1]) + fabs(cross[2]) + (dot > 0 ? 0 : 1));
+    err = fmax(err, fabs(hypot(hypot(n[0], n[1]), n[2]) - 1));
+    surface++;
+  }
+  CHECK(surface > 0 && err < 1e-14, "3D normals: F^T n off n0 by %g over %d particles", err, surface);
   elastic_solid_free(&s);
 }
 
 /* 2c. Normals and the fluid step on a 2D block of 7 x 7: the reference normal is (0, 1) at the
  * middle of the top row, zero at the centre; F = R turns the normals by R, F = diag(2, 1) turns a
- * corner's (n_x, n_y) to (n_x/2, n_y) normalised; a block translating at v through a fluid step of
- * several sub-steps has v_avg = v and acc_avg = v/dt (from rest), then 0. */
+ * corner's (n_x, n_y) to (n_x/2, n_y) normalised; a block moving at v0 and falling under g through
+ * a fluid step of several sub-steps has v_avg = v0 + g dt/2 and acc_avg = v_avg/dt (from rest),
+ * then acc_avg = g; a step of 0 s is refused. Then the 3D normals. */
 static void check_normals_and_advance(void) {
   struct elastic_solid s;
-  const double dx = 0.01, zero_g[2] = {0, 0};
+  const double dx = 0.01;
   int init = make_block(&s, 2, 7, 7, 1, dx, &plate_rubber, 0.0);
   CHECK(init == 0, "normals block: init");
   if (init != 0) return;
@@ -212,22 +275,26 @@ static void check_normals_and_advance(void) {
   CHECK(fabs(s.normal[corner * 2] - expect[0] / norm) < 1e-14 && fabs(s.normal[corner * 2 + 1] - expect[1] / norm) < 1e-14,
         "stretched corner normal (%g, %g)", s.normal[corner * 2], s.normal[corner * 2 + 1]);
   for (int a = 0; a < s.n; a++) s.F[a * 4] = s.F[a * 4 + 3] = 1, s.F[a * 4 + 1] = s.F[a * 4 + 2] = 0;
-  for (int a = 0; a < s.n; a++) s.v[a * 2] = 1.0, s.v[a * 2 + 1] = -0.5;
+  const double v0[2] = {1.0, -0.5}, g[2] = {0.0, -9.81};
+  for (int a = 0; a < s.n; a++) s.v[a * 2] = v0[0], s.v[a * 2 + 1] = v0[1];
   elastic_deformation_rate(&s);
-  elastic_acceleration(&s, zero_g);
+  elastic_acceleration(&s, g);
   const double dt_fluid = 3.5 * elastic_time_step(&s);
-  int kappa = elastic_advance(&s, dt_fluid, zero_g);
+  int kappa = elastic_advance(&s, dt_fluid, g);
   CHECK(kappa == 4, "kappa %d for a fluid step of 3.5 sub-step limits", kappa);
-  double v_err = 0, a_err = 0;
-  for (int a = 0; a < s.n; a++)
-    v_err = fmax(v_err, fabs(s.v_avg[a * 2] - 1.0) + fabs(s.v_avg[a * 2 + 1] + 0.5)),
-    a_err = fmax(a_err, fabs(s.acc_avg[a * 2] - 1.0 / dt_fluid) + fabs(s.acc_avg[a * 2 + 1] + 0.5 / dt_fluid));
-  CHECK(v_err < 1e-9 && a_err < 1e-9 / dt_fluid, "translation: v_avg off by %g, acc_avg by %g", v_err, a_err);
-  elastic_advance(&s, dt_fluid, zero_g);
+  double v_err = 0, a_err = 0;   /* v_avg = v0 + g dt/2 (exact for constant g); acc_avg = v_avg/dt from rest */
+  for (int i = 0; i < s.n * 2; i++) {
+    double v_avg = v0[i % 2] + 0.5 * g[i % 2] * dt_fluid;
+    v_err = fmax(v_err, fabs(s.v_avg[i] - v_avg)), a_err = fmax(a_err, fabs(s.acc_avg[i] - v_avg / dt_fluid));
+  }
+  CHECK(v_err < 1e-9 && a_err < 1e-9 / dt_fluid, "falling block: v_avg off by %g, acc_avg by %g", v_err, a_err);
+  elastic_advance(&s, dt_fluid, g);
   a_err = 0;
-  for (int i = 0; i < s.n * 2; i++) a_err = fmax(a_err, fabs(s.acc_avg[i]));
-  CHECK(a_err < 1e-9 / dt_fluid, "steady translation: acc_avg %g", a_err);
+  for (int i = 0; i < s.n * 2; i++) a_err = fmax(a_err, fabs(s.acc_avg[i] - g[i % 2]));
+  CHECK(a_err < 1e-6, "falling block, second step: acc_avg off g by %g", a_err);
+  CHECK(elastic_advance(&s, 0.0, g) == -1, "a fluid step of 0 s is refused");
   elastic_solid_free(&s);
+  check_normals_3d();
 }
 
 /* F of every particle from the positions: I + sum_b (u_b - u_a) (x) g_ab. */
@@ -353,7 +420,8 @@ static struct vibration free_vibration(const struct plate *plate, double periods
     double w = tip_deflection(&s);
     if (w_prev != 0 && (w > 0) != (w_prev > 0) && n_cross < 64) crossings[n_cross++] = t - dt * w / (w - w_prev);
     w_prev = w;
-    if (++steps % 20 == 0) out.energy_change = fmax(out.energy_change, fabs(elastic_energy(&s) - e0) / e0);
+    double change = ++steps % 20 == 0 ? fabs(elastic_energy(&s) - e0) / e0 : 0;
+    if (!(change <= out.energy_change)) out.energy_change = change;   /* a NaN sticks */
   }
   if (n_cross >= 2) out.period = 2 * (crossings[n_cross - 1] - crossings[0]) / (n_cross - 1);
   out.energy_loss_per_period = (e0 - elastic_energy(&s)) / e0 / (t / out.period_eb);
@@ -377,8 +445,8 @@ static void check_cantilever_frequency(void) {
   printf("cantilever L/H 10, damping 0.25: period %.5f s (%+.2f %% from Euler-Bernoulli), "
          "energy lost per period %.3f %%\n",
          damped.period, 100 * (damped.period / damped.period_eb - 1), 100 * damped.energy_loss_per_period);
-  CHECK(damped.energy_loss_per_period > 10 * plain.energy_change && damped.energy_loss_per_period < 0.01,
-        "damped energy loss per period %g (undamped change %g)", damped.energy_loss_per_period, plain.energy_change);
+  CHECK(damped.energy_loss_per_period > 0.001 && damped.energy_loss_per_period < 0.005,
+        "damped energy loss per period %g", damped.energy_loss_per_period);
 }
 
 /* The tip deflection over Euler–Bernoulli's, q L^4 / (8 E' I), of a cantilever under a uniform
@@ -395,15 +463,15 @@ static double static_deflection(const struct plate *plate) {
   double E_plane = s.mat.young / (1 - s.mat.poisson * s.mat.poisson), inertia = pow(thickness, 3) / 12;
   double w_eb = -q * pow(length, 4) / (8 * E_plane * inertia);
   double k = 1.875104 / length, omega = sqrt(E_plane * inertia * pow(k, 4) / (s.mat.rho0 * thickness));
-  double t = 0, w = 0, w_prev = 1;
+  double t = 0;   /* critical damping: the first mode's residual (1 + omega t) e^(-omega t) */
   elastic_acceleration(&s, g);
-  while (t < 20 / omega && !(t > 8 / omega && fabs(w - w_prev) < 1e-7 * fabs(w_eb))) {
+  while (t < 12 / omega) {   /* below 1e-4 */
     double dt = elastic_time_step(&s), relax = exp(-2 * omega * dt);
     elastic_substep(&s, dt, g);
     for (int i = 0; i < s.n * 2; i++) s.v[i] *= relax;
     t += dt;
-    w_prev = w, w = tip_deflection(&s);
   }
+  double w = tip_deflection(&s);
   elastic_solid_free(&s);
   return w / w_eb;
 }

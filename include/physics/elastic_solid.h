@@ -2,7 +2,10 @@
  * doc/theory.md §13): every kernel quantity in the reference configuration with a neighbour list
  * built once, the paper's correction matrix B0 or a quadratic one, the deformation gradient F
  * integrated in time, a hyperelastic first Piola–Kirchhoff stress, pairwise Kelvin–Voigt damping,
- * clamped particles and the solid's own time step and sub-steps. In 2D the stress state is plane strain. */
+ * clamped particles, the solid's own time step and sub-steps, and what the fluid coupling will
+ * use: the sub-steps of a fluid step with the averaged velocity and acceleration, and the surface
+ * normals. In 2D the stress state is plane strain. The reference search grid is dense over the
+ * solid's bounding box (meant for compact solids). */
 #ifndef MPSPH_ELASTIC_SOLID_H
 #define MPSPH_ELASTIC_SOLID_H
 
@@ -29,7 +32,7 @@ struct elastic_material {
   enum elastic_model model;
   double rho0;      /* reference density [kg/m^3] */
   double young;     /* Young's modulus E [Pa] */
-  double poisson;   /* Poisson's ratio nu [-], below 1/2 */
+  double poisson;   /* Poisson's ratio nu [-], in (-1, 1/2) */
   double damping;   /* Kelvin–Voigt pair coefficient (notes §1.9: SPHinXsys' 0.25; the paper only
                        cites its damping); 0 = none */
   enum elastic_correction correction;
@@ -56,7 +59,8 @@ struct elastic_solid {
   double *R;              /* scratch (quadratic correction): the strain gradient's conjugates to
                              dF/dX_k, dim^3 per particle [Pa m] */
   unsigned char *clamped; /* 1: held at x0 with v = 0 */
-  double *normal0;        /* reference surface normal (unit, outward; 0 inside) [-] */
+  double *normal0;        /* reference surface normal (unit, outward; 0 deeper than a support below
+                             the surface, where its kernel sum cancels) [-] */
   double *normal;         /* current normal: F^-T normal0 normalised (elastic_update_normals) [-] */
   double *x_step;         /* positions at the start of the last elastic_advance [m] */
   double *v_avg, *acc_avg;  /* velocity and acceleration averaged over the last elastic_advance,
@@ -103,8 +107,8 @@ double elastic_energy_density(int dim, enum elastic_model model, double lambda, 
 /** dF/dt [1/s] of every particle from the current velocities (Eq. P-33). */
 void elastic_deformation_rate(struct elastic_solid *s);
 
-/** The acceleration of every particle: the stress's pair force, minus the gradient of the strain
- *  energy sum_a V0 psi(F_a) (with the linear correction Eq. P-13 with the factor 2 of notes §1.9),
+/** The acceleration of every particle: the stress's pair force (minus the gradient of the strain
+ *  energy sum_a V0 psi(F_a); with the linear correction Eq. P-13 with the factor 2 of notes §1.9),
  *  the Kelvin–Voigt damping, gravity g (dim values) [m/s^2] and acc_ext, into acc [m/s^2]. */
 void elastic_acceleration(struct elastic_solid *s, const double *g);
 
@@ -115,12 +119,14 @@ void elastic_acceleration(struct elastic_solid *s, const double *g);
 void elastic_substep(struct elastic_solid *s, double dt, const double *g);
 
 /** The solid's time-step limit Delta t_s (Eq. P-29, with step_length for h in its acoustic
- *  part) [s] from its current v and acc. */
+ *  part) [s] from its current v and acc; NaN if one of them is not finite. */
 double elastic_time_step(const struct elastic_solid *s);
 
-/** Advance the solid by one fluid step dt [s] in kappa = floor(dt / Delta t_s) + 1 equal sub-steps
- *  (notes §1.10, Delta t_s from elastic_time_step at the start) with acc_ext held, and set
- *  v_avg = (x_end - x_start)/dt and acc_avg = (v_avg_new - v_avg_old)/dt. Returns kappa. */
+/** Advance the solid by one fluid step dt > 0 [s] in kappa = floor(dt / Delta t_s) + 1 equal
+ *  sub-steps (notes §1.10; Delta t_s from elastic_time_step at the start, whose acceleration part
+ *  is that of the last sub-step, before a new acc_ext) with acc_ext held, and set
+ *  v_avg = (x_end - x_start)/dt and acc_avg = (v_avg_new - v_avg_old)/dt. Returns kappa, or -1
+ *  (nothing done) for dt not positive or a time step that is not a number or too small. */
 int elastic_advance(struct elastic_solid *s, double dt, const double *g);
 
 /** The current normals from the reference ones by Nanson's formula: F^-T normal0, normalised

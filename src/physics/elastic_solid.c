@@ -376,15 +376,28 @@ static void reference_normals(struct elastic_solid *s) {
   memcpy(s->normal, s->normal0, sizeof(double) * s->n * dim);
 }
 
+/* 1 if the n * dim values of x are finite. */
+static int all_finite(const double *x, size_t count) {
+  for (size_t i = 0; i < count; i++)
+    if (!isfinite(x[i])) return 0;
+  return 1;
+}
+
 /* A message on stderr and 0 for parameters elastic_solid_init cannot take. */
-static int valid_parameters(int dim, int n, double dx, double h, const struct elastic_material *mat) {
-  const char *problem = dim != 2 && dim != 3                          ? "the dimension is not 2 or 3"
-                        : n < 1                                       ? "it has no particles"
-                        : !(dx > 0) || !(h > 0)                       ? "its spacing or smoothing length is not positive"
-                        : !(mat->rho0 > 0) || !(mat->young > 0)       ? "its density or Young's modulus is not positive"
-                        : !(mat->poisson > -1 && mat->poisson < 0.5) ? "its Poisson's ratio is not in (-1, 1/2)"
-                        : !(mat->damping >= 0)                        ? "its damping is negative"
-                                                                      : NULL;
+static int valid_parameters(int dim, int n, const double *x0, double dx, enum kernel_kind kind, double h,
+                            const struct elastic_material *mat) {
+  const char *problem =
+      dim != 2 && dim != 3                                    ? "the dimension is not 2 or 3"
+      : n < 1                                                 ? "it has no particles"
+      : !all_finite(x0, (size_t)n * dim)                      ? "a position is not finite"
+      : !(dx > 0) || !(h > 0)                                 ? "its spacing or smoothing length is not positive"
+      : kind != KERNEL_GAUSSIAN && kind != KERNEL_WENDLAND_C2 ? "its kernel is unknown"
+      : !(mat->rho0 > 0) || !(mat->young > 0)                 ? "its density or Young's modulus is not positive"
+      : !(mat->poisson > -1 && mat->poisson < 0.5)            ? "its Poisson's ratio is not in (-1, 1/2)"
+      : !(mat->damping >= 0)                                  ? "its damping is negative"
+      : (unsigned)mat->model >= ELASTIC_MODEL_COUNT           ? "its strain-energy model is unknown"
+      : (unsigned)mat->correction >= ELASTIC_CORRECTION_COUNT ? "its correction is unknown"
+                                                              : NULL;
   if (problem) fprintf(stderr, "mpsph: elastic solid: %s\n", problem);
   return problem == NULL;
 }
@@ -392,7 +405,7 @@ static int valid_parameters(int dim, int n, double dx, double h, const struct el
 int elastic_solid_init(struct elastic_solid *s, int dim, int n, const double *x0, double dx,
                        enum kernel_kind kind, double h, const struct elastic_material *mat) {
   memset(s, 0, sizeof *s);
-  if (!valid_parameters(dim, n, dx, h, mat)) return -1;
+  if (!valid_parameters(dim, n, x0, dx, kind, h, mat)) return -1;
   s->dim = dim, s->n = n, s->mat = *mat, s->dx = dx;
   double E = mat->young, nu = mat->poisson;
   s->shear = E / (2 * (1 + nu));
@@ -574,7 +587,9 @@ void elastic_substep(struct elastic_solid *s, double dt, const double *g) {
 
 int elastic_advance(struct elastic_solid *s, double dt, const double *g) {
   const size_t values = (size_t)s->n * s->dim;
-  int kappa = (int)floor(dt / elastic_time_step(s)) + 1;
+  double steps = floor(dt / elastic_time_step(s)) + 1;
+  if (!(dt > 0) || !(steps <= INT_MAX)) return -1;
+  int kappa = (int)steps;
   memcpy(s->x_step, s->x, values * sizeof(double));
   for (int step = 0; step < kappa; step++) elastic_substep(s, dt / kappa, g);
   for (size_t i = 0; i < values; i++) {
@@ -605,6 +620,7 @@ double elastic_time_step(const struct elastic_solid *s) {
     double v2 = 0, a2 = 0;
     for (int d = 0; d < s->dim; d++) v2 += s->v[a * s->dim + d] * s->v[a * s->dim + d],
                                      a2 += s->acc[a * s->dim + d] * s->acc[a * s->dim + d];
+    if (!isfinite(v2 + a2)) return NAN;
     v_max = fmax(v_max, sqrt(v2)), a_max = fmax(a_max, sqrt(a2));
   }
   double dt = s->step_length / (s->c_s + v_max);
