@@ -8,6 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "base/mem.h"
+#include "parallel/grid.h"
 #include "physics/linalg.h"
 
 /* The strain-energy models' names, in enum order. */
@@ -35,10 +36,9 @@ static void pk2(int dim, enum elastic_model model, double lambda, double shear, 
         S[r * dim + c] = shear * (C[r * dim + c] - (r == c)) + (r == c ? lambda * trace_E : 0.0);
     return;
   }
-  double J = linalg_det(dim, F);
+  double lambda_ln_J = lambda * log(linalg_det(dim, F));
   linalg_inverse(dim, C, C_inv);
-  for (int r = 0; r < dim * dim; r++)
-    S[r] = shear * ((r % (dim + 1) == 0) - C_inv[r]) + lambda * log(J) * C_inv[r];
+  for (int r = 0; r < dim * dim; r++) S[r] = shear * ((r % (dim + 1) == 0) - C_inv[r]) + lambda_ln_J * C_inv[r];
 }
 
 void elastic_pk1(int dim, enum elastic_model model, double lambda, double shear, const double *F, double *P) {
@@ -65,79 +65,74 @@ double elastic_energy_density(int dim, enum elastic_model model, double lambda, 
   return 0.5 * shear * (trace_C - dim) - shear * ln_J + 0.5 * lambda * ln_J * ln_J;
 }
 
-/* A grid of cells of the support's size over the reference positions, its particles in index
- * order (a counting sort): cell_of[a], the cells' starts first[c..c+1) into sorted. */
+/* The reference positions binned on a grid of cells no smaller than the support
+ * (parallel/grid.h), in index order within a cell (a counting sort): cell_of[a], the cells'
+ * starts first[c..c+1) into sorted. */
 struct reference_grid {
-  int dim, cells[3];
-  double lo[3], cell;   /* lower corner and cell side [m] */
-  size_t *cell_of, *first;
-  int *sorted;
+  struct grid g;
+  int *cell_of, *sorted;
+  size_t *first;
 };
 
-/* Bin s's reference positions into grid. */
-static void grid_build(const struct elastic_solid *s, struct reference_grid *grid) {
+/* Bin s's reference positions into grid; -1 (with a message) when the grid is too large to index. */
+static int grid_build(const struct elastic_solid *s, struct reference_grid *grid) {
   const int dim = s->dim, n = s->n;
-  *grid = (struct reference_grid){.dim = dim, .cells = {1, 1, 1}, .cell = s->k.support};
+  double lo[3], hi[3];
   for (int d = 0; d < dim; d++) {
-    double min = INFINITY, max = -INFINITY;
-    for (int a = 0; a < n; a++) min = fmin(min, s->x0[a * dim + d]), max = fmax(max, s->x0[a * dim + d]);
-    grid->lo[d] = min;
-    grid->cells[d] = (int)((max - min) / grid->cell) + 1;
+    lo[d] = INFINITY, hi[d] = -INFINITY;
+    for (int a = 0; a < n; a++) lo[d] = fmin(lo[d], s->x0[a * dim + d]), hi[d] = fmax(hi[d], s->x0[a * dim + d]);
   }
-  size_t n_cells = (size_t)grid->cells[0] * grid->cells[1] * grid->cells[2];
+  if (grid_init(&grid->g, dim, lo, hi, s->k.support) != 0) {
+    fprintf(stderr, "mpsph: elastic solid of %d particles: its extent holds too many cells of %g m\n", n,
+            s->k.support);
+    return -1;
+  }
+  size_t n_cells = (size_t)grid->g.n_cells;
   grid->cell_of = mem_alloc(mem_bytes(n, sizeof *grid->cell_of, "elastic cell index"), "elastic cell index");
   grid->first = mem_calloc(n_cells + 1, sizeof *grid->first, "elastic cell starts");
   grid->sorted = mem_alloc(mem_bytes(n, sizeof *grid->sorted, "elastic sorted particles"), "elastic sorted particles");
   for (int a = 0; a < n; a++) {
-    size_t index = 0;
-    for (int d = dim - 1; d >= 0; d--)
-      index = index * grid->cells[d] + (size_t)((s->x0[a * dim + d] - grid->lo[d]) / grid->cell);
-    grid->cell_of[a] = index;
-    grid->first[index + 1]++;
+    grid->cell_of[a] = grid_cell_of(&grid->g, s->x0 + (size_t)a * dim);
+    grid->first[grid->cell_of[a] + 1]++;
   }
   for (size_t c = 0; c < n_cells; c++) grid->first[c + 1] += grid->first[c];
   size_t *fill = mem_alloc(mem_bytes(n_cells, sizeof *fill, "elastic cell fill"), "elastic cell fill");
   memcpy(fill, grid->first, n_cells * sizeof *fill);
   for (int a = 0; a < n; a++) grid->sorted[fill[grid->cell_of[a]]++] = a;
   free(fill);
+  return 0;
 }
 
-/* Append to s->nb particle a's neighbours among the particles of the 3^dim cells around its own
- * (those within the support, a excluded), in cell order and index order within a cell. */
+/* Append to s->nb particle a's neighbours among the particles of the cells around its own
+ * (grid_stencil: those within the support, a excluded), in cell order and index order within a
+ * cell. */
 static void append_neighbours(struct elastic_solid *s, const struct reference_grid *grid, int a, size_t *count,
                               size_t *capacity) {
   const int dim = s->dim;
-  int home[3] = {0, 0, 0};
-  size_t rest = grid->cell_of[a];
-  for (int d = 0; d < dim; d++) home[d] = (int)(rest % grid->cells[d]), rest /= grid->cells[d];
-  for (int oz = (dim == 3 ? -1 : 0); oz <= (dim == 3 ? 1 : 0); oz++)
-    for (int oy = -1; oy <= 1; oy++)
-      for (int ox = -1; ox <= 1; ox++) {
-        int at[3] = {home[0] + ox, home[1] + oy, home[2] + oz}, inside = 1;
-        for (int d = 0; d < 3; d++) inside &= at[d] >= 0 && at[d] < grid->cells[d];
-        if (!inside) continue;
-        size_t c = ((size_t)at[2] * grid->cells[1] + at[1]) * grid->cells[0] + at[0];
-        for (size_t i = grid->first[c]; i < grid->first[c + 1]; i++) {
-          int b = grid->sorted[i];
-          double r2 = 0;
-          for (int d = 0; d < dim; d++) {
-            double diff = s->x0[a * dim + d] - s->x0[b * dim + d];
-            r2 += diff * diff;
-          }
-          if (b == a || r2 >= s->k.support2) continue;
-          if (*count == *capacity) {
-            *capacity *= 2;
-            s->nb = mem_realloc(s->nb, mem_bytes(*capacity, sizeof *s->nb, "elastic neighbours"), "elastic neighbours");
-          }
-          s->nb[(*count)++] = b;
-        }
+  long cells[27];
+  int n_cells = grid_stencil(&grid->g, grid->cell_of[a], 1, cells);
+  for (int k = 0; k < n_cells; k++)
+    for (size_t i = grid->first[cells[k]]; i < grid->first[cells[k] + 1]; i++) {
+      int b = grid->sorted[i];
+      double r2 = 0;
+      for (int d = 0; d < dim; d++) {
+        double diff = s->x0[a * dim + d] - s->x0[b * dim + d];
+        r2 += diff * diff;
       }
+      if (b == a || r2 >= s->k.support2) continue;
+      if (*count == *capacity) {
+        *capacity *= 2;
+        s->nb = mem_realloc(s->nb, mem_bytes(*capacity, sizeof *s->nb, "elastic neighbours"), "elastic neighbours");
+      }
+      s->nb[(*count)++] = b;
+    }
 }
 
-/* The reference neighbour list (nb_first, nb); -1 when it has more pairs than an int counts. */
+/* The reference neighbour list (nb_first, nb); -1 when its grid is too large or it has more pairs
+ * than an int counts. */
 static int build_reference_list(struct elastic_solid *s) {
   struct reference_grid grid;
-  grid_build(s, &grid);
+  if (grid_build(s, &grid) != 0) return -1;
   size_t capacity = (size_t)s->n * 16, count = 0;
   s->nb_first = mem_alloc(mem_bytes((size_t)s->n + 1, sizeof *s->nb_first, "elastic neighbour starts"),
                           "elastic neighbour starts");
