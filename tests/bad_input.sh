@@ -91,6 +91,24 @@ refuses ivisc-gd 'physics\.interface_viscosity: none is not available with schem
   run ivisc-gd --set scheme=generalized-dissipation --set physics.interface_viscosity=none
 refuses ivisc-value 'physics\.interface_viscosity: got .arithmetic., allowed values: none, harmonic' -- \
   run ivisc-value --set physics.interface_viscosity=arithmetic
+# Elastic solids (the gate case): scheme riemann only, their keys, a solid the elastic module
+# cannot set up, and no restart (checkpoints do not hold them).
+gate=cases/elastic-gate-antoci/case.yaml
+refuses solid-scheme 'solids: elastic solids are not available with scheme delta-plus' -- \
+  build/mpsph run "$gate" -o "$tmp/solid-scheme" --set scheme=delta-plus
+refuses solid-poisson 'solids\.0\.poisson_ratio: got 0\.5, expected a number > -1 and < 0\.5' -- \
+  build/mpsph run "$gate" -o "$tmp/solid-poisson" --set solids.0.poisson_ratio=0.5
+sed 's/, clamp_max: \[[^]]*\]//' "$gate" > "$tmp/one-corner.yaml"
+refuses solid-clamp 'one-corner\.yaml:[0-9]+: solids\.0\.clamp_min: got one corner of the clamp box' -- \
+  build/mpsph run "$tmp/one-corner.yaml" -o "$tmp/solid-clamp"
+refuses solid-probe "solids\.0\.probe: got a point outside the solid's box" -- \
+  build/mpsph run "$gate" -o "$tmp/solid-probe" --set 'solids.0.probe=[0.3,0]'
+refuses solid-layers 'solids\.0: the elastic solid cannot be set up' -- \
+  build/mpsph run "$gate" -o "$tmp/solid-layers" --set resolution.dx=0.0025
+refuses solid-overlap "solids\.0: a fluid particle lies inside the solid's box" -- \
+  scripts/mpirun -n 2 build/mpsph run "$gate" -o "$tmp/solid-overlap" --set 'fluids.0.box.min=[0.39,0]'
+refuses solid-restart "the case has solids: checkpoints do not hold the elastic solids' state" -- \
+  build/mpsph run "$gate" -o "$tmp/solid-restart" --restart "$tmp/none.h5"
 # Geometry.
 sed 's/max: \[1, 1\]}}$/max: [1, 1]}}\n  - {phase: water, box: {min: [0.5, 0.5], max: [0.9, 0.9]}}/' \
   "$case" > "$tmp/overlap.yaml"

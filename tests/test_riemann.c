@@ -24,7 +24,13 @@
  *  7. two liquids (both `incompressible`, neither a light phase) on lattices offset by (dx/2, dx/2),
  *     so that the rows at their interface lie 0.71 dx apart, at rho0 and rest: the re-initialisation
  *     gives rho0 to round-off for every particle (each liquid's Eq. 10 sum counts its own phase
- *     only; counting the other liquid's crowded rows gave 1.28 rho0 at the interface).
+ *     only; counting the other liquid's crowded rows gave 1.28 rho0 at the interface);
+ *  8. an elastic solid as a moving wall (doc/theory.md section 14): water with random velocities and
+ *     densities on a solid plate, no gravity: the loads the momentum pass records on the solid sum
+ *     to minus sum_i m_i du_i/dt (every fluid-solid pair once, on any rank count; the fluid pairs
+ *     cancel) to round-off; and with every fluid velocity and the solid's averaged velocity shifted
+ *     by the same V, du/dt and drho/dt are unchanged to round-off (the dummy velocity 2 v~ - v_i
+ *     makes the treatment Galilean invariant).
  * Usage: test_riemann */
 #include <math.h>
 #include <stdio.h>
@@ -84,6 +90,17 @@ static const char *wall_case =
     "  - {box: {min: [0, 0], max: [1, 1]}, slip: no}\n"
     CASE_TAIL;
 
+/* Test 8: water on a solid plate, no gravity. */
+static const char *solid_case =
+    "name: riemann-solid-test\n" UNIT_BOX_HEAD
+    "phases:\n"
+    "  - {name: water, rho0: 1000, c0: 20, gamma: 1, incompressible: true}\n"
+    "fluids:\n"
+    "  - {phase: water, box: {min: [0, 0], max: [1, 0.5]}}\n"
+    "solids:\n"
+    "  - {min: [0, -0.08], max: [1, 0], rho0: 1100, youngs_modulus: 1e6, poisson_ratio: 0.3, probe: [0.5, -0.04]}\n"
+    CASE_TAIL;
+
 /* Test 7: two liquids whose lattices are offset by (dx/2, dx/2) (anchors at their boxes' corners). */
 static const char *liquids_case =
     "name: riemann-liquids-test\n" UNIT_BOX_HEAD
@@ -112,7 +129,7 @@ static void check_solver(void) {
 static void set_fields(struct engine *e, int k) {
   struct parts *p = &e->p;
   for (long i = 0; i < p->n_owned; i++) {
-    if (p->phase[i] == PHASE_WALL) continue;
+    if (p->phase[i] < 0) continue;   /* a wall ghost or a solid's particle */
     const struct phase *f = &e->c->phases[p->phase[i]];
     p->m[i] = f->rho0 * e->prm.vol0;
     p->rho[i] = k == 2 ? f->rho0 * (1 + 0.01 * engine_test_noise(p->id[i], 5)) : f->rho0;
@@ -291,6 +308,56 @@ static void check_walls(struct engine *e) {
   CHECK(worst[0] <= 1e-13 && worst[1] == 0, "walls at rest: du/dt %g, drho/dt %g", worst[0], worst[1]);
 }
 
+/* The momentum pass's du/dt (2 per owned particle) and the continuity pass's drho/dt of the state
+ * set, into rate (3 per owned particle); the solid loads recorded summed over the ranks into load,
+ * and cleared. */
+static void solid_rates(struct engine *e, double *rate, double *load) {
+  run_pass(e, "Riemann momentum");
+  for (long i = 0; i < e->p.n_owned; i++)
+    for (int d = 0; d < 2; d++) rate[3 * i + d] = e->w.dv[d][i];
+  load[0] = load[1] = 0;
+  for (long k = 0; k < e->solids.loads.n; k++)
+    for (int d = 0; d < 2; d++) load[d] += e->solids.loads.at[k].force[d];
+  e->solids.loads.n = 0;
+  MPI_Allreduce(MPI_IN_PLACE, load, 2, MPI_DOUBLE, MPI_SUM, e->comm);
+  run_pass(e, "Riemann continuity");
+  for (long i = 0; i < e->p.n_owned; i++) rate[3 * i + 2] = e->w.drho[i];
+}
+
+static void check_solid_wall(struct engine *e) {
+  set_and_rebuild(e, 2);
+  const struct parts *p = &e->p;
+  double *rate = calloc(3 * (size_t)p->n_owned + 1, sizeof(double)), *moved = calloc(3 * (size_t)p->n_owned + 1, sizeof(double));
+  double load[2], load_moved[2], sum[6] = {0, 0, 0, 0, 0, 0}, worst[2] = {0, 0}, V[2] = {0.7, -0.4};
+  solid_rates(e, rate, load);
+  for (long i = 0; i < p->n_owned; i++)
+    for (int d = 0; d < 2 && p->phase[i] >= 0; d++) {
+      sum[d] += p->m[i] * rate[3 * i + d];
+      sum[2 + d] += fabs(p->m[i] * rate[3 * i + d]);
+      sum[4] = fmax(sum[4], fabs(rate[3 * i + d]));
+      sum[5] = fmax(sum[5], fabs(rate[3 * i + 2]));
+    }
+  MPI_Allreduce(MPI_IN_PLACE, sum, 4, MPI_DOUBLE, MPI_SUM, e->comm);
+  MPI_Allreduce(MPI_IN_PLACE, sum + 4, 2, MPI_DOUBLE, MPI_MAX, e->comm);
+  for (long g = 0; g < e->solids.view.n; g++)
+    for (int d = 0; d < 2; d++) e->solids.v_avg[2 * g + d] = V[d];
+  for (long i = 0; i < p->n_owned; i++)
+    for (int d = 0; d < 2 && p->phase[i] >= 0; d++) p->v[d][i] += V[d];
+  solid_rates(e, moved, load_moved);
+  for (long i = 0; i < p->n_owned; i++)
+    for (int k = 0; k < 3 && p->phase[i] >= 0; k++) worst[k / 2] = fmax(worst[k / 2], fabs(moved[3 * i + k] - rate[3 * i + k]));
+  MPI_Allreduce(MPI_IN_PLACE, worst, 2, MPI_DOUBLE, MPI_MAX, e->comm);
+  if (e->rank == 0)
+    printf("solid as a moving wall: sum m du/dt = (%.6g, %.6g), the loads (%.6g, %.6g); shifted by V: |d du/dt| %.3g "
+           "of %.3g, |d drho/dt| %.3g of %.3g\n", sum[0], sum[1], load[0], load[1], worst[0], sum[4], worst[1], sum[5]);
+  CHECK(fabs(sum[1]) > 1e-3 * sum[3], "the solid carries a load: sum m dv_y %g of %g", sum[1], sum[3]);
+  for (int d = 0; d < 2; d++)
+    CHECK(fabs(sum[d] + load[d]) <= 1e-12 * sum[2 + d], "loads %c: %g against -sum m du/dt %g", "xy"[d], load[d], -sum[d]);
+  CHECK(worst[0] <= 1e-12 * sum[4] && worst[1] <= 1e-12 * sum[5], "Galilean: du/dt %g, drho/dt %g", worst[0], worst[1]);
+  free(rate);
+  free(moved);
+}
+
 /* Every fluid particle at rest density with velocity (u, 0). */
 static void uniform_flow(struct engine *e, double u) {
   struct parts *p = &e->p;
@@ -352,6 +419,13 @@ int main(int argc, char **argv) {
   check_walls(&e2);
   engine_close_output(&e2);
   engine_free(&e2);
+  char dir4[256] = "/tmp/mpsph-test-riemann4-XXXXXX";
+  static struct case_def c4;
+  struct engine e4;
+  if (engine_test_open(dir4, sizeof dir4, solid_case, &c4, &e4)) return check_report("test_riemann");
+  check_solid_wall(&e4);
+  engine_close_output(&e4);
+  engine_free(&e4);
   if (engine_test_start(dir3, liquids_case, &c3, &e3)) return check_report("test_riemann");
   CHECK(!(e3.prm.features & FEAT_TRANSPORT_VELOCITY), "two liquids: no light phase, no transport velocity");
   check_liquid_reinit(&e3);
@@ -362,7 +436,7 @@ int main(int argc, char **argv) {
   check_stepper(&e1);
   if (rank == 0) {
     char cmd[900];
-    snprintf(cmd, sizeof cmd, "rm -rf '%s' '%s' '%s'", dir, dir2, dir3);
+    snprintf(cmd, sizeof cmd, "rm -rf '%s' '%s' '%s' '%s'", dir, dir2, dir3, dir4);
     if (system(cmd)) printf("could not remove %s, %s, %s\n", dir, dir2, dir3);
   }
   return engine_test_finish(&e1, dir1, "test_riemann");

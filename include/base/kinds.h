@@ -1,4 +1,4 @@
-/* kinds.h — the particle kinds (fluid, wall ghost): the table of what each kind is to the loops,
+/* kinds.h — the particle kinds (fluid, wall ghost, elastic solid): the table of what each kind is to the loops,
  * and the marker that maps a particle to its kind. */
 #ifndef MPSPH_KINDS_H
 #define MPSPH_KINDS_H
@@ -6,9 +6,10 @@
 /** The kinds of particle. A fluid particle holds its phase index (>= 0) in `phase`; a particle
  *  of any other kind holds the kind's marker, -kind, so that the stored phase values (snapshots,
  *  checkpoints) keep their meaning as kinds are added. */
-enum part_kind { KIND_FLUID, KIND_WALL, KIND_COUNT };
+enum part_kind { KIND_FLUID, KIND_WALL, KIND_SOLID, KIND_COUNT };
 
 #define PHASE_WALL (-KIND_WALL)   /* the marker of a wall ghost (-1, as written to the files) */
+#define PHASE_SOLID (-KIND_SOLID) /* the marker of an elastic solid's particle (-2) */
 
 /** What the loops ask of a particle's kind: one bit each. */
 enum {
@@ -31,7 +32,8 @@ enum {
  * question costs what the test of one marker does. */
 #define PART_KINDS(X, A) \
   X(A, KIND_FLUID, "fluid", KIND_INTEGRATED | KIND_LISTED, 8) \
-  X(A, KIND_WALL, "wall ghost", KIND_BOUNDARY | KIND_MIRRORED | KIND_ON_WALL, 2)
+  X(A, KIND_WALL, "wall ghost", KIND_BOUNDARY | KIND_MIRRORED | KIND_ON_WALL, 2) \
+  X(A, KIND_SOLID, "solid", KIND_BOUNDARY, 2)
 
 /** One row of the kind table. */
 struct part_kind_info {

@@ -10,6 +10,7 @@
 #define CASE_MAX_REGIONS 32
 #define CASE_MAX_WALLS 16
 #define CASE_MAX_PROBES 64
+#define CASE_MAX_SOLIDS 4
 #define CASE_MAX_VERTICES 64
 
 /* The schemes, one line each: X(value of enum scheme_kind, its spelling in case files). The
@@ -39,6 +40,8 @@ enum interface_viscosity { IFACE_VISC_NONE = 0, IFACE_VISC_HARMONIC };
 enum spc_model { SPC_PRESENT = 0, SPC_CONVENTIONAL };   /* paper 003 section 3 / section 2.3 */
 enum dissipation_form { DISSIPATION_CONSISTENT = 0, DISSIPATION_PRINTED };
 enum balance_kind { BALANCE_TIME = 0, BALANCE_WORK };   /* what a re-partition balances */
+enum solid_model { SOLID_SVK = 0, SOLID_NEO_HOOKEAN };  /* as enum elastic_model (physics/elastic_solid.h) */
+enum solid_correction { SOLID_LINEAR = 0, SOLID_QUADRATIC };   /* as enum elastic_correction */
 
 /** A geometric shape: box {min,max}, circle {centre,radius[,inner_radius]} (disc in 2D, ball in
  *  3D; an annulus or shell with inner_radius > 0) or polygon (2D only, vertices in order). [m] */
@@ -115,6 +118,23 @@ struct wall {
   struct body body;             /* active: the wall moves as a rigid body (moving is then 1) */
 };
 
+/** An elastic solid (scheme riemann): a box filled with particles on the fluid's lattice spacing,
+ *  moved by its stress, gravity and the fluid's pair forces (doc/theory.md §13, §14); the particles
+ *  inside the clamp box are held in place. */
+struct solid_def {
+  double min[3], max[3];     /* the box the particles fill at t = 0, nodes at min + (i + 1/2) dx [m] */
+  int has_clamp;             /* clamp_min and clamp_max given */
+  double clamp_min[3], clamp_max[3];   /* particles inside are held [m] */
+  double rho0;               /* density [kg/m^3] */
+  double young;              /* Young's modulus E [Pa] */
+  double poisson;            /* Poisson's ratio [-] */
+  double damping;            /* Kelvin-Voigt pair coefficient [-] */
+  enum solid_model model;
+  enum solid_correction correction;
+  double probe[3];           /* a point of the solid at t = 0: solids.csv records the displacement of
+                                the particle nearest to it [m] */
+};
+
 /** A probe read at the output.probes_interval: a pressure sensor (a point, or in 2D a segment of
  *  length diameter along axis centred on position), a wave gauge (elevation of the top of phase
  *  along the vertical line through position) or the integrals over one phase. */
@@ -166,6 +186,8 @@ struct case_def {
   struct wall walls[CASE_MAX_WALLS];
   int n_probes;
   struct probe probes[CASE_MAX_PROBES];
+  int n_solids;
+  struct solid_def solids[CASE_MAX_SOLIDS];
   enum init_pressure initial_pressure;
   /* physics */
   double delta;              /* delta-SPH density diffusion coefficient [-] */

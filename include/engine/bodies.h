@@ -7,6 +7,7 @@
 
 #include <mpi.h>
 #include <stdio.h>
+#include "engine/load_sum.h"
 #include "io/io_hdf5.h"
 #include "physics/pass_ctx.h"
 #include "physics/rigid_body.h"
@@ -31,10 +32,7 @@ struct bodies {
   int n;
   struct body_run run[CASE_MAX_WALLS];
   struct body_loads loads;           /* appended by the rhs pass on this rank */
-  struct body_load *all;             /* every rank's loads, gathered (capacity all_cap) */
-  long all_cap;
-  int *counts, *displs;              /* loads per rank and their offsets in all */
-  MPI_Datatype load_type;            /* one struct body_load */
+  struct load_gather gather;         /* every rank's loads, in the sum order */
 };
 
 struct engine;

@@ -6,6 +6,7 @@
 #include <stdio.h>
 #include "case/case.h"
 #include "engine/bodies.h"
+#include "engine/solids.h"
 #include "io/io_hdf5.h"
 #include "physics/pass_ctx.h"
 #include "parallel/nlist.h"
@@ -66,6 +67,7 @@ struct engine {
   double stage_time;               /* time of the state the current stage evaluates (prm.frames) [s] */
   int moving_walls;                /* the case has moving walls (a prescribed motion, or bodies) */
   struct bodies bodies;            /* the rigid bodies (engine/bodies.h) */
+  struct solids solids;            /* the elastic solids (engine/solids.h) */
   long step;
   double step_start_time;          /* time and step at the start of the current step */
   long step_start;
@@ -81,6 +83,7 @@ struct engine {
   long n_repartitions, last_repartition_step;
   double t_compute;                /* this rank's pass time since the last balance check [s] */
   double t_migrate, t_output;      /* accumulated [s] */
+  double t_solids;                 /* in solids_advance (loads, sub-steps, copies), accumulated [s] */
   double t_repartition;            /* in re-partitions after start-up, accumulated [s] */
   double t_dropped_ops;            /* time of operations dropped from the pipeline by a re-assembly [s] */
   double t_steps;                  /* wall time of the step loop without the final output [s] */
@@ -93,7 +96,7 @@ struct engine {
   long *snap_counts;
   double next_output, next_stats, next_probes, next_checkpoint, wall_start, next_progress;
   long last_snapshot_step, last_stats_step, last_probes_step;   /* -1 before the first */
-  struct csv_table stats, probes, bodies_csv;
+  struct csv_table stats, probes, bodies_csv, solids_csv;
   int lock_fd;                     /* rank 0: the output folder's lock (outdir_lock), else -1 */
   double *probe_buf;               /* the probes' samples of one row, sized at the first row */
   long probe_buf_len;

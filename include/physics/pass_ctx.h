@@ -47,7 +47,8 @@ enum body_load_source { LOAD_PAIRS = 0, LOAD_GUARD = 1, LOAD_GUARD_IMPULSE = 2 }
  *  guard took from it (action and reaction). */
 struct body_load {
   int64_t id;                      /* the fluid particle's id (the loads are summed in id order) */
-  int wall;                        /* the body's wall index */
+  int wall;                        /* the body's wall index; for a solid load (struct solid_view) the
+                                      solid particle's index g */
   int source;                      /* enum body_load_source: the order of one particle's loads */
   double x[3];                     /* the fluid particle's position: every pair force is along the
                                       pair's separation, so its torque is taken here [m] */
@@ -65,6 +66,16 @@ struct body_loads {
  *  velocity change) dv that the body gave fluid particle i: -m_i dv at the particle's position. */
 void body_load_append(struct body_loads *l, const struct parts *p, long i, int w, enum body_load_source source,
                       const double *dv);
+
+/** What the pair passes read of the elastic solids (engine/solids.h): the particles with ids id0
+ *  to id0 + n - 1 are the solids' (kind KIND_SOLID), g = id - id0 indexes v and a. */
+struct solid_view {
+  int64_t id0;
+  long n;
+  const double *v;                 /* velocity averaged over the last fluid sub-step, dim per
+                                      particle (the wall velocity the fluid sees) [m/s] */
+  const double *a;                 /* the change of that average over the sub-step / its length [m/s^2] */
+};
 
 /** Work arrays of the scheme, sized to the particle capacity (those read at halo slots) or to
  *  the owned particles (the RK4 state and sums, the derivatives, the free-surface region and
@@ -145,6 +156,9 @@ struct pass_ctx {
   void *progress_arg;
   struct body_loads *loads;        /* FEAT_BODIES: the rhs pass appends a load per fluid particle
                                       and body whose ghosts are among its neighbours */
+  const struct solid_view *solids; /* the elastic solids; NULL without */
+  struct body_loads *solid_loads;  /* with solids: the momentum pass appends a load per pair of an
+                                      owned fluid particle and a solid particle */
   struct pass_out out;
 };
 

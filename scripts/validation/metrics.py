@@ -1290,3 +1290,64 @@ def lock_exchange_front(run, dx, depth=0.2, t_star_fit=1.5, x_lock=0.905):
                  t_star[-1], light[-1], dense[-1]))
     return abs(fr_light / 0.5 - 1), notes, {"t_star": t_star, "light": light, "dense": dense, "fit": fit,
                                               "depth": depth}
+
+
+# --- elastic gate (Antoci et al. 2007; paper 002 section 4.4 without air) --------------------
+
+GATE_EXPERIMENT = ("experiment_chrono", "experiment_ng2020")
+GATE_RECORD = 0.4   # [s]: the record the issue's error covers; its max |u_exp| is the unit of the errors
+
+
+def gate_points(reference, comp, t_end):
+    """The experiment's points (both digitisations) of displacement component comp ("x", "y") in
+    [0, t_end]: times [s] and displacements [m]."""
+    ref = read_reference(reference)
+    t_ref = ref["t_s"].astype(float)
+    keep = np.isin(ref["source"], GATE_EXPERIMENT) & (ref["component"] == comp) & (t_ref >= 0) & (t_ref <= t_end)
+    return t_ref[keep], ref["disp_m"][keep].astype(float)
+
+
+def gate_differences(run, reference, t_end):
+    """The gate's free-end displacement from solids.csv (the particle nearest the probe; its x sign
+    flipped to the sources', positive downstream: the water runs toward -x in the case) and, per
+    component x and y, the experiment's points in [0, t_end], u_SPH - u_exp there (u_SPH
+    interpolated) and the unit max |u_exp| over [0, GATE_RECORD]. Returns (t, {comp: u_SPH},
+    {comp: (t_exp, u_exp, diff, unit)}), or None when solids.csv ends before the last point."""
+    s = read_csv(os.path.join(run, "solids.csv"))
+    t = s["time"]
+    sim = {"x": -s["solid0_ux"], "y": s["solid0_uy"]}
+    points = {}
+    for comp in ("x", "y"):
+        tk, uk = gate_points(reference, comp, t_end)
+        if t[-1] < tk.max():
+            return None
+        unit = np.abs(gate_points(reference, comp, GATE_RECORD)[1]).max()
+        points[comp] = (tk, uk, np.interp(tk, t, sim[comp]) - uk, unit)
+    return t, sim, points
+
+
+def gate_early(run, reference, t_max=0.1):
+    """Elastic gate, early stage: per component, the largest |u_SPH - u_exp| over the experiment's
+    points with t <= t_max, in the unit of gate_differences."""
+    got = gate_differences(run, reference, t_max)
+    return None if got is None else {comp: np.abs(d).max() / unit for comp, (tk, uk, d, unit) in got[2].items()}
+
+
+def gate_tip(run, dx, reference):
+    """Elastic gate: for the horizontal and the vertical displacement of the gate's free end, the
+    RMS of u_SPH - u_exp over the experiment's points in [0, GATE_RECORD] (gate_differences), in
+    units of max |u_exp| of that component; the larger of the two."""
+    got = gate_differences(run, reference, GATE_RECORD)
+    if got is None:
+        return float("nan"), "solids.csv ends before the last reference point", None
+    t, sim, points = got
+    curves, errors, notes = {"t": t, "ux": sim["x"], "uy": sim["y"]}, {}, []
+    for comp, (tk, uk, diff, unit) in points.items():
+        errors[comp] = math.sqrt(np.mean(diff ** 2)) / unit
+        early = tk <= 0.1
+        notes.append("u%s: RMS %.3f of max %.4f m, t <= 0.1 s: largest |diff| %.3f; peak %.4f m at %.3f s "
+                     "(experiment %.4f m at %.3f s)" % (
+                         comp, errors[comp], unit, np.abs(diff[early]).max() / unit, sim[comp].max(),
+                         t[np.argmax(sim[comp])], uk.max(), tk[np.argmax(uk)]))
+        curves["t_ref_" + comp], curves["u_ref_" + comp] = tk, uk
+    return max(errors.values()), "; ".join(notes), curves

@@ -262,3 +262,17 @@ def lock_exchange(ax, items):
     ax.plot([], [], "k--", lw=0.8, label="Fr = 1/2 (energy-conserving light current)")
     ax.set_xlabel("t* = t sqrt(g'/H)")
     ax.set_ylabel("front distance from the lock / H")
+
+
+def gate(ax, items):
+    """Horizontal (solid) and vertical (dashed) displacement of the gate's free end against time,
+    with the experiment's points (both digitisations)."""
+    for r, c in items:
+        line, = ax.plot(c["t"], c["ux"], "-", lw=0.8, label=_label(r) + ", x")
+        ax.plot(c["t"], c["uy"], "--", lw=0.8, color=line.get_color(), label=_label(r) + ", y")
+    if items:
+        c = items[-1][1]
+        ax.plot(c["t_ref_x"], c["u_ref_x"], "ks", ms=4, label="Antoci et al. 2007, x (digitised)")
+        ax.plot(c["t_ref_y"], c["u_ref_y"], "k^", ms=4, label="Antoci et al. 2007, y (digitised)")
+    ax.set_xlabel("t [s]")
+    ax.set_ylabel("displacement of the free end [m]")

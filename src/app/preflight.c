@@ -45,6 +45,7 @@ static int size_case(const struct case_def *c, int n_ranks, int per_node, double
   kernel_init(&k, c->kernel, c->dimension, c->h_over_dx * c->dx);
   s->support = k.support;
   s->n = init_visit_count(c, k.support);
+  s->n_kind[KIND_SOLID] = 0;   /* solids are small and not estimated (mem_estimate.c) */
   s->n_kind[KIND_WALL] = init_wall_visit_count(c, k.support);
   s->n_kind[KIND_FLUID] = s->n - s->n_kind[KIND_WALL];
   s->counted = 0;

@@ -45,6 +45,8 @@ static const char *const SPC_MODEL_NAMES[] = {"present", "conventional", NULL};
 static const char *const DISSIPATION_NAMES[] = {"consistent", "printed", NULL};
 static const char *const BALANCE_NAMES[] = {"time", "work", NULL};
 static const char *const RAMP_NAMES[] = {"none", "linear", "smooth", NULL};
+static const char *const SOLID_MODEL_NAMES[] = {"saint-venant-kirchhoff", "neo-hookean", NULL};   /* elastic_model_name's */
+static const char *const SOLID_CORRECTION_NAMES[] = {"linear", "quadratic", NULL};
 
 /* The keys allowed in the mappings that a list reader of its own reads (the others follow from
  * the key tables). */
@@ -89,6 +91,7 @@ static const struct rule R_TOP_CELLS = {"an integer from 1 to 1048576", 1, 0, 10
 static const struct rule R_DIMENSION = {"2 or 3", 2, 0, 3, 1};
 static const struct rule R_MODE = {"an integer from 1 to 4", 1, 0, 4, 1};
 static const struct rule R_H_OVER_DX = {"a number > 0 and <= 10", 0, 1, 10, 0};
+static const struct rule R_POISSON = {"a number > -1 and < 0.5", -1, 1, 0.5, 0};   /* 0.5 itself: poisson_below_half */
 
 /* Default density bands [min, max] / rho0 of the instability check: a liquid, a gas. */
 static const double LIQUID_BAND[2] = {0.5, 2.0}, GAS_BAND[2] = {0.1, 10.0};
@@ -1315,6 +1318,40 @@ static int phase_name_unique(const struct map *m, const struct case_def *c, int 
   return unique_name(m, c->phases[0].name, sizeof c->phases[0], i);
 }
 
+/* solids.N (read to clamp_max): max above min; the clamp box, when given, whole (both corners, max above min). */
+static int solid_boxes(const struct map *m, const struct case_def *c, int i) {
+  const struct solid_def *s = &c->solids[i];
+  char path[PATH_LEN], lo_path[PATH_LEN];
+  if (ordered(m, s->min, s->max)) return 1;
+  const struct ynode *lo = get(m, "clamp_min", lo_path), *hi = get(m, "clamp_max", path);
+  if ((lo == NULL) != (hi == NULL))
+    return fail(m->ld, lo ? lo : hi, lo ? lo_path : path, "got one corner of the clamp box, expected both "
+                "clamp_min and clamp_max");
+  for (int d = 0; lo && d < m->ld->dim; d++)
+    if (!(s->clamp_max[d] > s->clamp_min[d]))
+      return fail(m->ld, hi, path, "got clamp_max not above clamp_min, expected clamp_max > clamp_min in every "
+                  "component");
+  return 0;
+}
+
+/* solids.N.poisson_ratio below 1/2 (an incompressible solid has no finite sound speed). */
+static int poisson_below_half(const struct map *m, const struct case_def *c, int i) {
+  char path[PATH_LEN];
+  if (c->solids[i].poisson < 0.5) return 0;
+  return fail(m->ld, get(m, "poisson_ratio", path), path, "got 0.5, expected a number > -1 and < 0.5");
+}
+
+/* solids.N.probe inside the solid's box. */
+static int probe_in_solid(const struct map *m, const struct case_def *c, int i) {
+  const struct solid_def *s = &c->solids[i];
+  char path[PATH_LEN];
+  for (int d = 0; d < m->ld->dim; d++)
+    if (!(s->probe[d] >= s->min[d] && s->probe[d] <= s->max[d]))
+      return fail(m->ld, get(m, "probe", path), path, "got a point outside the solid's box, expected a point of "
+                  "the solid (between min and max)");
+  return 0;
+}
+
 /* ---- the key tables ---- */
 
 #define CASE_KEY(sec, name, kind, member, ...)                                                    \
@@ -1346,6 +1383,34 @@ static const struct case_key PHASE_ITEM_KEYS[] = {
               .doc = "a fluid particle of the phase whose ρ/ρ0 leaves the band stops the run as unstable (status 2) [-]"),
 };
 
+#define SOLID_KEY(name, kind, member, ...)                                                        \
+  {.section = "", .key = name, .type = kind, .offset = offsetof(struct solid_def, member), __VA_ARGS__}
+
+/* The keys of a solid, in the order they are read and written. */
+static const struct case_key SOLID_ITEM_KEYS[] = {
+    SOLID_KEY("min", KEY_VECTOR, min, .flags = KEY_REQUIRED, .doc = "lower corner of the box the solid fills at t = 0 [m]"),
+    SOLID_KEY("max", KEY_VECTOR, max, .flags = KEY_REQUIRED,
+              .doc = "upper corner of the box; the particles sit at min + (i + ½)Δx [m]"),
+    SOLID_KEY("clamp_min", KEY_VECTOR, clamp_min, .flags = KEY_GIVEN, .given = offsetof(struct solid_def, has_clamp),
+              .def_doc = "absent", .doc = "lower corner of the clamp box: the solid's particles inside it are held [m]"),
+    SOLID_KEY("clamp_max", KEY_VECTOR, clamp_max, .flags = KEY_GIVEN, .given = offsetof(struct solid_def, has_clamp),
+              .check = solid_boxes, .def_doc = "absent", .doc = "upper corner of the clamp box [m]"),
+    SOLID_KEY("rho0", KEY_NUMBER, rho0, .flags = KEY_REQUIRED, .rule = &R_POSITIVE, .doc = "density [kg/m³]"),
+    SOLID_KEY("youngs_modulus", KEY_NUMBER, young, .flags = KEY_REQUIRED, .rule = &R_POSITIVE,
+              .doc = "Young's modulus E [Pa]"),
+    SOLID_KEY("poisson_ratio", KEY_NUMBER, poisson, .flags = KEY_REQUIRED, .rule = &R_POISSON,
+              .check = poisson_below_half, .doc = "Poisson's ratio ν [-]"),
+    SOLID_KEY("damping", KEY_NUMBER, damping, .rule = &R_NONNEGATIVE, .def = {0.25},
+              .doc = "Kelvin–Voigt pair damping coefficient (doc/theory.md §13); `0`: none [-]"),
+    SOLID_KEY("model", KEY_CHOICE, model, .names = SOLID_MODEL_NAMES, .def = {SOLID_SVK},
+              .doc = "strain energy: Saint Venant–Kirchhoff (paper 002) or compressible neo-Hookean; plane strain in 2D"),
+    SOLID_KEY("correction", KEY_CHOICE, correction, .names = SOLID_CORRECTION_NAMES, .def = {SOLID_QUADRATIC},
+              .doc = "the deformation gradient's weights: paper 002's linear correction, or mpsph's quadratic one "
+              "(accurate at 4–6 particles through a thickness; doc/theory.md §13)"),
+    SOLID_KEY("probe", KEY_VECTOR, probe, .flags = KEY_REQUIRED, .check = probe_in_solid,
+              .doc = "a point of the solid at t = 0: `solids.csv` records the displacement of its nearest particle [m]"),
+};
+
 static const struct list_def PHASES = {
     .what = "phases", .lo = 1, .hi = CASE_MAX_PHASES, .items = offsetof(struct case_def, phases),
     .item_size = sizeof(struct phase), .keys = PHASE_ITEM_KEYS,
@@ -1354,6 +1419,10 @@ static const struct list_def FLUIDS = {.what = "fluid regions", .hi = CASE_MAX_R
                                        .allowed = FLUID_KEYS, .read = read_fluid, .put = put_fluid};
 static const struct list_def WALLS = {.what = "walls", .hi = CASE_MAX_WALLS, .allowed = WALL_KEYS,
                                       .read = read_wall, .put = put_wall};
+static const struct list_def SOLIDS = {
+    .what = "solids", .hi = CASE_MAX_SOLIDS, .items = offsetof(struct case_def, solids),
+    .item_size = sizeof(struct solid_def), .keys = SOLID_ITEM_KEYS,
+    .n_keys = sizeof SOLID_ITEM_KEYS / sizeof SOLID_ITEM_KEYS[0]};
 static const struct list_def PROBES = {.what = "probes", .hi = CASE_MAX_PROBES, .allowed = PROBE_KEYS,
                                        .read = read_probe, .put = put_probe};
 
@@ -1419,6 +1488,8 @@ static const struct case_key CASE_KEYS[] = {
     CASE_KEY("", "fluids", KEY_LIST, n_fluids, .list = &FLUIDS,
              .doc = "regions filled with particles, in this order (section 2.2)"),
     CASE_KEY("", "walls", KEY_LIST, n_walls, .list = &WALLS, .doc = "walls of ghost particles (section 2.2)"),
+    CASE_KEY("", "solids", KEY_LIST, n_solids, .list = &SOLIDS,
+             .doc = "elastic solids, scheme riemann only (section 2.2)"),
     CASE_KEY("physics", "delta", KEY_NUMBER, delta, .rule = &R_NONNEGATIVE, .computed = delta_default,
              .def_doc = "`0.1` (`0.5` with generalized-dissipation)", .doc = "δ of the density diffusion [-]"),
     CASE_KEY("physics", "artificial_viscosity", KEY_NUMBER, alpha, .rule = &R_NONNEGATIVE,

@@ -31,10 +31,7 @@ void bodies_init(struct engine *e) {
     e->prm.body_walls |= 1u << w;
   }
   if (!B->n) return;
-  B->counts = mem_calloc((size_t)e->n_ranks, sizeof(int), "body loads");
-  B->displs = mem_calloc((size_t)e->n_ranks, sizeof(int), "body loads");
-  MPI_Type_contiguous((int)sizeof(struct body_load), MPI_BYTE, &B->load_type);
-  MPI_Type_commit(&B->load_type);
+  load_gather_init(&B->gather, e->n_ranks);
 }
 
 void bodies_frames(const struct engine *e, struct frame *f) {
@@ -42,34 +39,6 @@ void bodies_frames(const struct engine *e, struct frame *f) {
     const struct body_run *r = &e->bodies.run[k];
     rigid_frame(&e->c->walls[r->wall].body, e->p.dim, r->y, r->acc, r->ang_acc, &f[r->wall]);
   }
-}
-
-/* Order of the gathered loads: by body wall, then by fluid particle id, then by source. */
-static int load_order(const void *a, const void *b) {
-  const struct body_load *x = a, *y = b;
-  if (x->wall != y->wall) return x->wall < y->wall ? -1 : 1;
-  if (x->id != y->id) return x->id < y->id ? -1 : 1;
-  return (x->source > y->source) - (x->source < y->source);
-}
-
-/* Gather every rank's loads into B->all, sorted; returns their count. */
-static long gather_loads(struct engine *e) {
-  struct bodies *B = &e->bodies;
-  int mine = (int)B->loads.n;
-  MPI_Allgather(&mine, 1, MPI_INT, B->counts, 1, MPI_INT, e->comm);
-  long total = 0;
-  for (int r = 0; r < e->n_ranks; r++) {
-    B->displs[r] = (int)total;
-    total += B->counts[r];
-  }
-  if (total > B->all_cap) {
-    B->all_cap = total + total / 2;
-    B->all = mem_realloc(B->all, mem_bytes((size_t)B->all_cap, sizeof *B->all, "body loads"), "body loads");
-  }
-  MPI_Allgatherv(B->loads.at, mine, B->load_type, B->all, B->counts, B->displs, B->load_type, e->comm);
-  qsort(B->all, (size_t)total, sizeof *B->all, load_order);
-  B->loads.n = 0;
-  return total;
 }
 
 /* Force and torque about the centre of mass c from the sorted loads l[0, n). */
@@ -89,11 +58,12 @@ static void sum_loads(const struct body_load *l, long n, const double *c, double
 /* Gather the loads and sum them per body k (about its centre of mass) into force[k], torque[k]. */
 static void sum_bodies(struct engine *e, double (*force)[3], double (*torque)[3]) {
   struct bodies *B = &e->bodies;
-  long total = gather_loads(e), first = 0;
+  long total = load_gather_all(&B->gather, &B->loads, e->comm), first = 0;
+  const struct body_load *all = B->gather.all;
   for (int k = 0; k < B->n; k++) {
     long end = first;
-    while (end < total && B->all[end].wall == B->run[k].wall) end++;
-    sum_loads(B->all + first, end - first, &B->run[k].y[RB_X], force[k], torque[k]);
+    while (end < total && all[end].wall == B->run[k].wall) end++;
+    sum_loads(all + first, end - first, &B->run[k].y[RB_X], force[k], torque[k]);
     first = end;
   }
 }
@@ -189,9 +159,6 @@ int bodies_numbers(struct engine *e, struct hdf5_number *v) {
 
 void bodies_free(struct bodies *B) {
   free(B->loads.at);
-  free(B->all);
-  free(B->counts);
-  free(B->displs);
-  if (B->n) MPI_Type_free(&B->load_type);
+  load_gather_free(&B->gather);
   memset(B, 0, sizeof *B);
 }

@@ -338,7 +338,8 @@ void engine_evaluate(struct engine *e, int skip_state_halo) {
 
 struct pass_ctx engine_pass_ctx(struct engine *e) {
   return (struct pass_ctx){.c = e->c, .prm = &e->prm, .p = &e->p, .w = &e->w, .nl = &e->nl, .space = &e->space,
-                           .loads = &e->bodies.loads};
+                           .loads = &e->bodies.loads, .solids = e->solids.n ? &e->solids.view : NULL,
+                           .solid_loads = &e->solids.loads};
 }
 
 long engine_wall_guard(struct engine *e) {

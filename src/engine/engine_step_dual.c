@@ -99,7 +99,7 @@ double dual_advection_dt(struct engine *e, double a_tv) {
   const struct case_def *c = e->c;
   double m[3];
   fluid_maxima(e, 0, m);
-  double v_max = m[0], dt = DUAL_ADVECTION_CFL * e->prm.h / fmax(c->u_max, v_max);
+  double v_max = fmax(m[0], solids_max_speed(e)), dt = DUAL_ADVECTION_CFL * e->prm.h / fmax(c->u_max, v_max);
   for (int ph = 0; ph < c->n_phases; ph++)
     if (c->phases[ph].viscosity > 0)
       dt = fmin(dt, DUAL_ADVECTION_CFL * e->prm.h * e->prm.h * c->phases[ph].rho0 / c->phases[ph].viscosity);
@@ -195,7 +195,11 @@ static int acoustic_substep(struct engine *e, double dt) {
   run(e, OP_CONTINUITY);
   if (engine_check_derivatives(e)) return 2;
   compress(e, 0.5 * dt);
-  return 0;
+  if (!e->solids.n) return 0;
+  double t0 = MPI_Wtime();
+  int status = solids_advance(e, dt);
+  e->t_solids += MPI_Wtime() - t0;
+  return status;
 }
 
 /* The start of an advection step: lists, re-initialisation, transport shift, dt_ad, drho/dt.

@@ -70,6 +70,19 @@ static int bodies_refused(const struct case_def *c, const char *scheme, char *er
   return 0;
 }
 
+/* Elastic solids are coupled to the fluid by scheme riemann's pair terms only: the others refuse
+ * them. Returns 0 or 1. */
+static int solids_refused(const struct case_def *c, const char *scheme, char *err, size_t len) {
+  if (!c->n_solids) return 0;
+  return snprintf(err, len, "%s: solids: elastic solids are not available with scheme %s in this version "
+                  "(scheme riemann has them)", c->source_file, scheme), 1;
+}
+
+/* Schemes delta-plus and delta-sph refuse the solids. */
+static int delta_refused(const struct case_def *c, char *err, size_t len) {
+  return solids_refused(c, c->scheme == SCHEME_DELTA_SPH ? "delta-sph" : "delta-plus", err, len);
+}
+
 /* The options of paper 000 that schemes same-phase-continuity and generalized-dissipation do not
  * have (keys under physics), with the value that leaves each off. */
 static const char *const DELTA_PLUS_ONLY[][2] = {{"shifting", "none"}, {"tensile_control", "false"},
@@ -91,7 +104,7 @@ static int delta_plus_option(const struct case_def *c) {
 static int same_phase_terms(const struct case_def *c, char *err, size_t len) {
   int k = delta_plus_option(c);
   if (coupled_viscosity_refused(c, "same-phase-continuity", "paper 003 Eq. 21 with the harmonic mean", err, len) ||
-      bodies_refused(c, "same-phase-continuity", err, len))
+      bodies_refused(c, "same-phase-continuity", err, len) || solids_refused(c, "same-phase-continuity", err, len))
     return 1;
   if (k < 0) return 0;
   snprintf(err, len, "%s: physics.%s: only %s with scheme same-phase-continuity (paper 003 has no such term)",
@@ -105,7 +118,8 @@ static int same_phase_terms(const struct case_def *c, char *err, size_t len) {
 static int gd_unsupported(const struct case_def *c, char *err, size_t len) {
   int k = delta_plus_option(c);
   if (coupled_viscosity_refused(c, "generalized-dissipation", "paper 004 Eq. 10", err, len) ||
-      bodies_refused(c, "generalized-dissipation", err, len))
+      bodies_refused(c, "generalized-dissipation", err, len) ||
+      solids_refused(c, "generalized-dissipation", err, len))
     return 1;
   if (k < 0) return 0;
   snprintf(err, len, "%s: physics.%s: not part of scheme generalized-dissipation (use none, false, 0 or sum)",
@@ -126,9 +140,9 @@ static int riemann_supported(const struct case_def *c, char *err, size_t len) {
 /* The schemes, indexed by enum scheme_kind. */
 static const struct scheme SCHEMES[] = {
     [SCHEME_DELTA_PLUS] = {0, engine_option_terms, engine_assemble_stage, NULL, gradients_and_rhs_ops,
-                           engine_delta_plus_dt, engine_step_rk, NULL},
+                           engine_delta_plus_dt, engine_step_rk, delta_refused},
     [SCHEME_DELTA_SPH] = {FEAT_SHEPARD, engine_option_terms, engine_assemble_stage, shepard_pressure_ops,
-                          gradients_and_rhs_ops, engine_delta_plus_dt, engine_step_rk, NULL},
+                          gradients_and_rhs_ops, engine_delta_plus_dt, engine_step_rk, delta_refused},
     [SCHEME_SAME_PHASE_CONTINUITY] = {FEAT_SAME_PHASE_CONTINUITY, engine_option_terms, engine_assemble_stage,
                                       NULL, same_phase_ops, engine_delta_plus_dt, engine_step_rk, same_phase_terms},
     [SCHEME_GENERALIZED_DISSIPATION] = {FEAT_GENERALIZED_DISSIPATION, engine_option_terms, engine_assemble_stage,

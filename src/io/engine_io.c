@@ -88,23 +88,26 @@ static void stats_header(const struct engine *e) {
   fprintf(f, ",wall_seconds,wall_guard_hits\n");
 }
 
-/* Rank 0: open stats.csv, probes.csv (if the case has probes) and bodies.csv (if it has bodies),
+/* Rank 0: open stats.csv, probes.csv (if the case has probes), bodies.csv (if it has bodies) and
+ * solids.csv (if it has solids),
  * headers on new files. Returns 0, 1 when a file cannot be opened, or 3 when a header cannot be
  * written, with a message. */
 static int open_tables(struct engine *e) {
-  int fresh_stats, fresh_probes = 0, fresh_bodies = 0;
+  int fresh_stats, fresh_probes = 0, fresh_bodies = 0, fresh_solids = 0;
   if (open_csv(e, &e->stats, &fresh_stats) ||
       (e->c->n_probes && open_csv(e, &e->probes, &fresh_probes)) ||
-      (e->bodies.n && open_csv(e, &e->bodies_csv, &fresh_bodies))) {
-    fprintf(stderr, "mpsph: cannot open stats.csv, probes.csv or bodies.csv in '%s': %s\n", e->outdir,
+      (e->bodies.n && open_csv(e, &e->bodies_csv, &fresh_bodies)) ||
+      (e->solids.n && open_csv(e, &e->solids_csv, &fresh_solids))) {
+    fprintf(stderr, "mpsph: cannot open stats.csv, probes.csv, bodies.csv or solids.csv in '%s': %s\n", e->outdir,
             strerror(errno));
     return 1;
   }
   if (fresh_stats) stats_header(e);
   if (fresh_probes) probes_write_header(e->probes.f, e->c);
   if (fresh_bodies) bodies_csv_header(e, e->bodies_csv.f);
+  if (fresh_solids) solids_csv_header(e, e->solids_csv.f);
   return end_row(e, &e->stats) || (e->probes.f && end_row(e, &e->probes)) ||
-                 (e->bodies_csv.f && end_row(e, &e->bodies_csv))
+                 (e->bodies_csv.f && end_row(e, &e->bodies_csv)) || (e->solids_csv.f && end_row(e, &e->solids_csv))
              ? 3
              : 0;
 }
@@ -114,6 +117,7 @@ int engine_open_output(struct engine *e) {
   e->stats.name = "stats.csv";
   e->probes.name = "probes.csv";
   e->bodies_csv.name = "bodies.csv";
+  e->solids_csv.name = "solids.csv";
   int status = 0;
   if (e->rank == 0) {
     if (outdir_create(e->outdir) || outdir_write_file(e->outdir, "config.yaml", put_text, e->case_yaml)) {
@@ -144,6 +148,7 @@ int engine_close_output(struct engine *e) {
   int status = close_table(e, &e->stats);
   if (close_table(e, &e->probes)) status = 3;
   if (close_table(e, &e->bodies_csv)) status = 3;
+  if (close_table(e, &e->solids_csv)) status = 3;
   return rank0_status(e, status);
 }
 
@@ -156,7 +161,8 @@ static int sync_table(const struct engine *e, struct csv_table *t) {
 
 int engine_checkpoint(struct engine *e) {
   int status = 0;
-  if (e->rank == 0) status = sync_table(e, &e->stats) | sync_table(e, &e->probes) | sync_table(e, &e->bodies_csv);
+  if (e->rank == 0) status = sync_table(e, &e->stats) | sync_table(e, &e->probes) | sync_table(e, &e->bodies_csv) |
+                           sync_table(e, &e->solids_csv);
   return rank0_status(e, status) ? 3 : engine_checkpoint_write(e);
 }
 
@@ -285,6 +291,10 @@ int engine_output(struct engine *e, int force) {
     if (e->rank == 0 && e->bodies_csv.f) {
       bodies_csv_row(e, e->bodies_csv.f);
       status |= end_row(e, &e->bodies_csv);
+    }
+    if (e->rank == 0 && e->solids_csv.f) {
+      solids_csv_row(e, e->solids_csv.f);
+      status |= end_row(e, &e->solids_csv);
     }
     rows = 1;
   }

@@ -89,6 +89,7 @@ struct run_summary {
   long steps;
   double loop_seconds, n_fluid, n_wall;
   double op_max[ENGINE_MAX_OPS], op_mean[ENGINE_MAX_OPS], op_pairs[ENGINE_MAX_OPS];
+  double solids_max, solids_mean;  /* in solids_advance [s] */
   double migrate_max, migrate_mean, output_max, steps_max, dropped_max, dropped_mean, cpu_max, cpu_mean;
   double *per_rank;                /* PER_RANK figures of each rank; rank 0 only */
   double mem_sum[N_MEM];           /* the project's arrays by owner, summed over the ranks [bytes] */
@@ -130,6 +131,7 @@ static void summarise(struct engine *e, long steps, double loop_seconds, struct 
     MPI_Allreduce(&pairs, &s->op_pairs[k], 1, MPI_DOUBLE, MPI_SUM, e->comm);
   }
   max_mean(e, e->t_migrate, &s->migrate_max, &s->migrate_mean);
+  max_mean(e, e->t_solids, &s->solids_max, &s->solids_mean);
   max_mean(e, e->t_dropped_ops, &s->dropped_max, &s->dropped_mean);
   s->output_max = max_over_ranks(e, e->t_output);
   s->steps_max = max_over_ranks(e, e->t_steps);
@@ -160,6 +162,7 @@ static void write_rows(FILE *f, const void *ctx) {
             s->op_max[k], s->op_mean[k], s->op_pairs[k]);
   fprintf(f, "migration,time,%ld,%.6f,%.6f,\n", e->n_repartitions, s->migrate_max, s->migrate_mean);
   fprintf(f, "output,time,,%.6f,,\n", s->output_max);
+  if (e->solids.n) fprintf(f, "solids,time,%ld,%.6f,%.6f,\n", e->solids.substeps_total, s->solids_max, s->solids_mean);
   fprintf(f, "dropped_operations,time,,%.6f,%.6f,\n", s->dropped_max, s->dropped_mean);
   fprintf(f, "halo_particles,run,%.0f,,,\n", s->halo_particles);
   fprintf(f, "halo_particles_max,run,%.0f,,,\n", s->halo_particles_max);
@@ -204,6 +207,10 @@ static void print_summary(const struct engine *e, const struct run_summary *s) {
   printf("  throughput: %.4g fluid particle-steps/s in total, %.4g per rank\n", rate, rate / e->n_ranks);
   for (int k = 0; k < e->n_ops; k++) printf("  %6.2f s  %s\n", s->op_max[k], e->ops[k].name);
   printf("  %6.2f s  migration, sort, halo rebuild (%ld re-partitions)\n", s->migrate_max, e->n_repartitions);
+  if (e->solids.n)
+    printf("  %6.2f s  elastic solids: loads, %ld sub-steps (%.1f per fluid sub-step), particle copies\n",
+           s->solids_max, e->solids.substeps_total,
+           (double)e->solids.substeps_total / (double)(e->solids.advances ? e->solids.advances : 1));
   printf("  %6.2f s  output\n", e->t_output);
   printf("  peak memory: %.1f MB on the largest rank, %.0f bytes per particle (all ranks)\n",
          rss_max / 1e6, rss_sum / n);

@@ -11,7 +11,11 @@
  * A wall ghost j (fixed walls) carries the one-sided dummy state of i (Eq. 20 with the corrections
  * A2, A3 of the notes): p_j = p_i + rho_i max(0, a_i.(r_j - r_i)), a_i = g + f_potential, the density
  * of i's EOS at p_j, i's sound speed and viscosity, and the velocity -v_i (no slip) or v_i with its
- * component along the ghost's mirror direction n reversed (free slip), with volume dx^dim.
+ * component along the ghost's mirror direction n reversed (free slip), with volume dx^dim. A
+ * particle a of an elastic solid is a moving wall (notes 1.7): p_a = p_i + rho_i max(0, (a_i -
+ * a~_a).(r_a - r_i)), v_a = 2 v~_a - v_i, v~_a and a~_a the solid's velocity averaged over the last
+ * fluid sub-step and its change (struct solid_view), its own volume m_a/rho_a, and the pair force's
+ * reaction -m_i dv_i(pair) a load on the solid (the Riemann axis stays the pair's, as for the walls).
  * Transport velocity (Eq. 12, light phases, notes A10): a_tv,i = -(2 p0_tv/rho_i) sum_j V_j grad_i W_ij. */
 #include <math.h>
 #include "physics/eos.h"
@@ -41,12 +45,29 @@ static inline double wall_dummy(const struct pass_ctx *ctx, const struct rcentre
   return ci->p + ci->rho * fmax(0.0, head);
 }
 
+/* The dummy pressure [Pa] and velocity vj [m/s] of solid particle j for particle i, dx = r_i - r_j;
+ * its index g into the solid view in *g. */
+static inline double solid_dummy(const struct pass_ctx *ctx, const struct rcentre *ci, long j, const double *dx,
+                                 double *vj, long *g, const int dim) {
+  const struct solid_view *s = ctx->solids;
+  *g = (long)(ctx->p->id[j] - s->id0);
+  const double *vs = s->v + *g * dim, *as = s->a + *g * dim;
+  double head = 0;
+  for (int d = 0; d < dim; d++) {
+    head -= (ci->a[d] - as[d]) * dx[d];
+    vj[d] = 2.0 * vs[d] - ci->v[d];
+  }
+  return ci->p + ci->rho * fmax(0.0, head);
+}
+
 /* The Riemann sums of i: the momentum sums (pressure, viscous) when MOMENTUM, else the continuity
- * sum; dim is a compile-time constant of each specialisation. */
+ * sum; with SOLIDS the solid particles among the neighbours are moving walls (and, with MOMENTUM,
+ * take a load); dim is a compile-time constant of each specialisation. */
 static inline __attribute__((always_inline)) void riemann_sums(const struct pass_ctx *ctx, const struct rcentre *ci,
                                                                const struct neighbours *nb, double *grad_p,
                                                                double *visc, double *drho, long *pairs,
-                                                               const int dim, const int MOMENTUM) {
+                                                               const int dim, const int MOMENTUM,
+                                                               const int SOLIDS) {
   const struct parts *p = ctx->p;
   const struct phase *phases = ctx->c->phases;
   const double *restrict x[3] = {p->x[0], p->x[1], p->x[2]}, *restrict v[3] = {p->v[0], p->v[1], p->v[2]};
@@ -64,10 +85,11 @@ static inline __attribute__((always_inline)) void riemann_sums(const struct pass
       if (r2 <= 0) continue;
       pair_chunk_dx(&c, k, dim, dx);
       n++;
-      const int wall = part_has(phase[j], KIND_BOUNDARY);
+      const int wall = part_has(phase[j], KIND_BOUNDARY), solid = SOLIDS && phase[j] == PHASE_SOLID;
       double pj = pres[j], rhoj = rho[j], cj, etaj;
+      long g = -1;
       if (wall) {
-        pj = wall_dummy(ctx, ci, j, dx, vj, dim);
+        pj = solid ? solid_dummy(ctx, ci, j, dx, vj, &g, dim) : wall_dummy(ctx, ci, j, dx, vj, dim);
         rhoj = eos_density(&phases[ci->phase], pj);
         cj = ci->c;
         etaj = ci->eta;
@@ -77,15 +99,18 @@ static inline __attribute__((always_inline)) void riemann_sums(const struct pass
         etaj = phases[phase[j]].viscosity;
       }
       for (int d = 0; d < dim; d++) vdx += (ci->v[d] - vj[d]) * dx[d];
-      /* the walls' volume is the lattice's */
-      const double fv = wall ? kernel_f(&ctx->prm->kern, r2) * ctx->prm->vol0 : c.fv[k], r = sqrt(r2), zj = rhoj * cj;
+      /* the walls' volume is the lattice's, a solid particle's its own */
+      const double fv = wall && !solid ? kernel_f(&ctx->prm->kern, r2) * ctx->prm->vol0 : c.fv[k], r = sqrt(r2),
+                   zj = rhoj * cj;
       if (MOMENTUM) {
         double pstar = riemann_pressure(ci->z, ci->p, zj, pj, -vdx / r, (ci->z + zj) / (ci->rho + rhoj));
-        double eta = harmonic_mean(ci->eta, etaj);
+        double eta = harmonic_mean(ci->eta, etaj), dv_pair[3] = {0, 0, 0};
         for (int d = 0; d < dim; d++) {
           gp[d] += pstar * fv * dx[d];
           vs[d] += eta * fv * (ci->v[d] - vj[d]);
+          dv_pair[d] = 2.0 * (eta * fv * (ci->v[d] - vj[d]) - pstar * fv * dx[d]) / ci->rho;
         }
+        if (solid) body_load_append(ctx->solid_loads, p, ci->i, (int)g, LOAD_PAIRS, dv_pair);
       } else {
         dr += fv * (zj * vdx + r * (ci->p - pj)) / (ci->z + zj);
       }
@@ -121,10 +146,18 @@ static void centre_of(const struct pass_ctx *ctx, long i, struct rcentre *ci) {
 static void sums_of(struct pass_ctx *ctx, const struct rcentre *ci, const struct neighbours *nb, double *grad_p,
                     double *visc, double *drho, int momentum) {
   long *pairs = &ctx->out.pairs;
-  if (ctx->p->dim == 2) momentum ? riemann_sums(ctx, ci, nb, grad_p, visc, drho, pairs, 2, 1)
-                              : riemann_sums(ctx, ci, nb, grad_p, visc, drho, pairs, 2, 0);
-  else momentum ? riemann_sums(ctx, ci, nb, grad_p, visc, drho, pairs, 3, 1)
-                : riemann_sums(ctx, ci, nb, grad_p, visc, drho, pairs, 3, 0);
+  if (ctx->solids) {
+    if (ctx->p->dim == 2) momentum ? riemann_sums(ctx, ci, nb, grad_p, visc, drho, pairs, 2, 1, 1)
+                                : riemann_sums(ctx, ci, nb, grad_p, visc, drho, pairs, 2, 0, 1);
+    else momentum ? riemann_sums(ctx, ci, nb, grad_p, visc, drho, pairs, 3, 1, 1)
+                  : riemann_sums(ctx, ci, nb, grad_p, visc, drho, pairs, 3, 0, 1);
+  } else if (ctx->p->dim == 2) {
+    momentum ? riemann_sums(ctx, ci, nb, grad_p, visc, drho, pairs, 2, 1, 0)
+             : riemann_sums(ctx, ci, nb, grad_p, visc, drho, pairs, 2, 0, 0);
+  } else {
+    momentum ? riemann_sums(ctx, ci, nb, grad_p, visc, drho, pairs, 3, 1, 0)
+             : riemann_sums(ctx, ci, nb, grad_p, visc, drho, pairs, 3, 0, 0);
+  }
 }
 
 /* du/dt of fluid particle i. */

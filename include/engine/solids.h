@@ -1,0 +1,65 @@
+/* solids.h — the elastic solids of a run (scheme riemann; notes seed-002 §1.7, §1.10, §1.13).
+ * Each solid is replicated on every rank (physics/elastic_solid.h) and advanced alike on all of
+ * them; its particles also sit among the fluid's (kind KIND_SOLID, ids after the fluid and wall
+ * particles), owned by the rank of their cell and in the halos like any particle, so that the
+ * fluid's pair loops see them as moving walls. After each acoustic sub-step the pair forces the
+ * fluid's momentum pass recorded (loads) are gathered from every rank, summed per solid particle
+ * in the fluid particles' id order (the same sums on every rank, whatever the partition), held
+ * over the solid's sub-steps of that fluid sub-step, and the particles' copies take the new state. */
+#ifndef MPSPH_SOLIDS_H
+#define MPSPH_SOLIDS_H
+
+#include <stdio.h>
+#include "engine/load_sum.h"
+#include "physics/elastic_solid.h"
+#include "physics/pass_ctx.h"
+
+/** One solid of the run. */
+struct solid_run {
+  struct elastic_solid s;
+  long first;                 /* index g of its particle 0 (its id is view.id0 + first) */
+  int probe;                  /* its particle nearest to the case's probe point */
+  double force[3];            /* the fluid's on the solid at the last coupling [N] (2D: [N/m]) */
+};
+
+/** The solids of a run. */
+struct solids {
+  int n;
+  struct solid_run run[CASE_MAX_SOLIDS];
+  struct solid_view view;     /* what the pair passes read (its arrays: v_avg, acc_avg) */
+  double *v_avg, *acc_avg;    /* every solid's, concatenated (dim per particle) */
+  struct body_loads loads;    /* appended by the momentum pass on this rank */
+  struct load_gather gather;
+  long substeps;              /* solid sub-steps of the last fluid sub-step (largest over solids) */
+  long substeps_total, advances;   /* sums of substeps and the count of solids_advance calls */
+};
+
+struct engine;
+
+/** Set up the solids of the case on every rank at their reference state. Returns 0, or 1 with a
+ *  message on rank 0 (a solid the elastic module refuses). Collective only in its agreement. */
+int solids_init(struct engine *e);
+
+/** After the fluid and wall particles are generated: number the solids' particles after them and
+ *  add those whose cell this rank owns to its particles. Collective. Returns 0, or 1 with a
+ *  message (a solid particle outside the domain). */
+int solids_add_particles(struct engine *e);
+
+/** After an acoustic sub-step of dt [s]: gather and sum the loads, advance every solid over dt
+ *  under gravity and the loads, and give the solid particles' copies (owned and halo) the new
+ *  position, velocity v_avg, density rho0/J and pressure -tr(sigma)/dim. Returns 0, or 2 on every
+ *  rank (with a message on rank 0) if a solid's state is not finite. Collective. */
+int solids_advance(struct engine *e, double dt);
+
+/** The largest speed of a solid particle [m/s] (the same on every rank). */
+double solids_max_speed(const struct engine *e);
+
+/** The solids.csv header and one row: step, time, then per solid the probe particle's
+ *  displacement, the fluid's force on the solid and the solid's kinetic plus strain energy. */
+void solids_csv_header(const struct engine *e, FILE *f);
+void solids_csv_row(const struct engine *e, FILE *f);
+
+/** Free everything. */
+void solids_free(struct solids *S);
+
+#endif
