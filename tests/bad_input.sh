@@ -92,7 +92,7 @@ refuses ivisc-gd 'physics\.interface_viscosity: none is not available with schem
 refuses ivisc-value 'physics\.interface_viscosity: got .arithmetic., allowed values: none, harmonic' -- \
   run ivisc-value --set physics.interface_viscosity=arithmetic
 # Elastic solids (the gate case): scheme riemann only, their keys, a solid the elastic module
-# cannot set up, and no restart (checkpoints do not hold them).
+# cannot set up, a fluid region over a solid.
 gate=cases/elastic-gate-antoci/case.yaml
 refuses solid-scheme 'solids: elastic solids are not available with scheme delta-plus' -- \
   build/mpsph run "$gate" -o "$tmp/solid-scheme" --set scheme=delta-plus
@@ -107,8 +107,8 @@ refuses solid-layers 'solids\.0: the elastic solid cannot be set up' -- \
   build/mpsph run "$gate" -o "$tmp/solid-layers" --set resolution.dx=0.0025
 refuses solid-overlap "solids\.0: a fluid particle lies inside the solid's box" -- \
   scripts/mpirun -n 2 build/mpsph run "$gate" -o "$tmp/solid-overlap" --set 'fluids.0.box.min=[0.39,0]'
-refuses solid-restart "the case has solids: checkpoints do not hold the elastic solids' state" -- \
-  build/mpsph run "$gate" -o "$tmp/solid-restart" --restart "$tmp/none.h5"
+refuses solid-spacing 'solids\.0\.max: got a box 30\.6667 particle spacings wide along axis 1, expected a whole number' -- \
+  build/mpsph run cases/elastic-plate-walhorn/case.yaml -o "$tmp/solid-spacing" --set resolution.dx=0.003
 # Geometry.
 sed 's/max: \[1, 1\]}}$/max: [1, 1]}}\n  - {phase: water, box: {min: [0.5, 0.5], max: [0.9, 0.9]}}/' \
   "$case" > "$tmp/overlap.yaml"

@@ -252,7 +252,7 @@ static void test_checkpoint(const char *path, int salt, int empty, const char *y
   double dt = 1e-4 * salt, times[3] = {0, 0.5, 1.5}, dt_read = -1;
   long steps = 7, steps_read = -1, counts[3] = {total, total, total};
   struct hdf5_number numbers[] = {{"dt", &dt, NULL}, {"steps", NULL, &steps}};
-  struct checkpoint_extra x = {2, numbers, empty ? 0 : 3, times, counts};
+  struct checkpoint_extra x = {2, numbers, 0, NULL, empty ? 0 : 3, times, counts};
   struct snapshot_info info = {.time = 0.25 * salt, .step = 10L * salt, .dimension = 2,
                                .case_yaml = yaml, .code_version = VERSION};
   CHECK(hdf5_write_checkpoint(path, &info, &p, &x, MPI_COMM_WORLD, err, sizeof err) == 0,
@@ -265,7 +265,7 @@ static void test_checkpoint(const char *path, int salt, int empty, const char *y
             got.n_particles == total && strcmp(got.case_yaml, yaml) == 0, "read header: %s", err);
   hdf5_info_free(&got);
   struct hdf5_number back[] = {{"dt", &dt_read, NULL}, {"steps", NULL, &steps_read}};
-  struct checkpoint_extra y = {2, back, 0, NULL, NULL};
+  struct checkpoint_extra y = {2, back, 0, NULL, 0, NULL, NULL};
   parts_init(&p, 2, 1, 1);
   CHECK(hdf5_read_run(path, &y, MPI_COMM_WORLD, err, sizeof err) == 0 &&
             hdf5_read_particles(path, &p, MPI_COMM_WORLD, err, sizeof err) == 0,
@@ -294,7 +294,7 @@ static void test_not_checkpoint(const char *path) {
   char err[512] = "";
   double dt;
   struct hdf5_number numbers[] = {{"dt", &dt, NULL}};
-  struct checkpoint_extra y = {1, numbers, 0, NULL, NULL};
+  struct checkpoint_extra y = {1, numbers, 0, NULL, 0, NULL, NULL};
   CHECK(hdf5_read_run(path, &y, MPI_COMM_WORLD, err, sizeof err) == 3 &&
             strstr(err, "not a checkpoint"), "snapshot read as a checkpoint: '%s'", err);
 }

@@ -11,8 +11,11 @@
 
 #include <stdio.h>
 #include "engine/load_sum.h"
+#include "io/io_hdf5.h"
 #include "physics/elastic_solid.h"
 #include "physics/pass_ctx.h"
+
+#define SOLID_ARRAYS 7   /* checkpoint arrays of a solid: x, v, acc, F, dF, v_avg, acc_avg */
 
 /** One solid of the run. */
 struct solid_run {
@@ -20,6 +23,7 @@ struct solid_run {
   long first;                 /* index g of its particle 0 (its id is view.id0 + first) */
   int probe;                  /* its particle nearest to the case's probe point */
   double force[3];            /* the fluid's on the solid at the last coupling [N] (2D: [N/m]) */
+  char names[SOLID_ARRAYS][32];   /* the checkpoint's names of its arrays */
 };
 
 /** The solids of a run. */
@@ -50,6 +54,15 @@ int solids_add_particles(struct engine *e);
  *  position, velocity v_avg, density rho0/J and pressure -tr(sigma)/dim. Returns 0, or 2 on every
  *  rank (with a message on rank 0) if a solid's state is not finite. Collective. */
 int solids_advance(struct engine *e, double dt);
+
+/** The checkpoint arrays of the solids into v (named pointers to their state: what a continuation
+ *  needs to take the same sub-steps); returns the count. */
+int solids_arrays(struct engine *e, struct hdf5_array *v);
+
+/** After a restart read the solids' arrays and the particles: the first solid id, the current
+ *  normals and the averaged state the pair passes read. Returns 0, or 1 with a message on rank 0
+ *  when an array read holds a value that is not finite (the same on every rank). Collective. */
+int solids_restarted(struct engine *e, const char *path);
 
 /** The largest speed of a solid particle [m/s] (the same on every rank). */
 double solids_max_speed(const struct engine *e);

@@ -25,11 +25,23 @@ struct hdf5_number {
   long *integer;
 };
 
-/** What a checkpoint holds beyond the snapshot layout: the run state as named numbers, and the
- *  snapshot series written so far (/run/snapshot_times [s], /run/snapshot_particles). */
+/** A named array of the run state that every rank holds alike (an elastic solid's, replicated):
+ *  written by rank 0 as the dataset /run/<name> of n float64, read whole by every rank into at,
+ *  its length checked. */
+struct hdf5_array {
+  const char *name;
+  double *at;
+  long n;
+};
+
+/** What a checkpoint holds beyond the snapshot layout: the run state as named numbers and
+ *  replicated arrays, and the snapshot series written so far (/run/snapshot_times [s],
+ *  /run/snapshot_particles). */
 struct checkpoint_extra {
   int n_numbers;
   const struct hdf5_number *numbers;
+  int n_arrays;
+  const struct hdf5_array *arrays;
   int n_snapshots;
   double *snapshot_times;    /* allocated by hdf5_read_run (caller frees) */
   long *snapshot_counts;     /* likewise */

@@ -1351,3 +1351,49 @@ def gate_tip(run, dx, reference):
                          t[np.argmax(sim[comp])], uk.max(), tk[np.argmax(uk)]))
         curves["t_ref_" + comp], curves["u_ref_" + comp] = tk, uk
     return max(errors.values()), "; ".join(notes), curves
+
+
+# --- elastic plate (Walhorn et al. 2005 benchmark; six codes' curves) -------------------------
+
+def first_peak(t, u, t_max):
+    """Largest u and its time over t <= t_max (the first swing of the plate's top)."""
+    keep = t <= t_max
+    k = int(np.argmax(u[keep]))
+    return u[keep][k], t[keep][k]
+
+
+def plate_peaks(reference, t_max=0.4):
+    """The first peak (value [m], time [s]) of each code's curve in the reference, by source."""
+    ref = read_reference(reference)
+    out = {}
+    for src in sorted(set(ref["source"])):
+        keep = ref["source"] == src
+        out[src] = first_peak(ref["t_s"][keep].astype(float), ref["ux_m"][keep].astype(float), t_max)
+    return out
+
+
+def plate_peak(run, dx, reference, t_max=0.4):
+    """Elastic plate: |u_peak / mean - 1| of the first peak of the plate top's horizontal
+    displacement (solids.csv, t <= t_max) against the mean of the six codes' first peaks; the
+    band the codes span (the largest of their own deviations from that mean) is the threshold."""
+    s = read_csv(os.path.join(run, "solids.csv"))
+    if s["time"][-1] < t_max:
+        return float("nan"), "solids.csv ends at t = %.3g s, before %g s" % (s["time"][-1], t_max), None
+    peaks = plate_peaks(reference, t_max)
+    values = np.array([v for v, _ in peaks.values()])
+    times = np.array([t for _, t in peaks.values()])
+    peak, t_peak = first_peak(s["time"], s["solid0_ux"], t_max)
+    mean = values.mean()
+    notes = ("first peak %.4f m at %.3f s; the six codes %.4f-%.4f m (mean %.4f, band +-%.1f %%) at %.3f-%.3f s" % (
+        peak, t_peak, values.min(), values.max(), mean, 100 * np.abs(values / mean - 1).max(), times.min(), times.max()))
+    ref = read_reference(reference)
+    curves = {"t": s["time"], "u": s["solid0_ux"], "ref": [(src, ref["t_s"][ref["source"] == src].astype(float),
+                                                           ref["ux_m"][ref["source"] == src].astype(float))
+                                                          for src in peaks]}
+    return abs(peak / mean - 1), notes, curves
+
+
+def plate_band(reference, t_max=0.4):
+    """The six codes' band: the largest |u_peak / mean - 1| among them."""
+    values = np.array([v for v, _ in plate_peaks(reference, t_max).values()])
+    return float(np.abs(values / values.mean() - 1).max())

@@ -276,3 +276,14 @@ def gate(ax, items):
         ax.plot(c["t_ref_y"], c["u_ref_y"], "k^", ms=4, label="Antoci et al. 2007, y (digitised)")
     ax.set_xlabel("t [s]")
     ax.set_ylabel("displacement of the free end [m]")
+
+
+def plate(ax, items):
+    """Horizontal displacement of the plate's top against time, with the six codes' curves."""
+    for r, c in items:
+        ax.plot(c["t"], c["u"], "-", lw=1.2, label=_label(r))
+    if items:
+        for src, t, u in items[-1][1]["ref"]:
+            ax.plot(t, u, ":", lw=0.8, label=src)
+    ax.set_xlabel("t [s]")
+    ax.set_ylabel("horizontal displacement of the plate's top [m]")

@@ -562,7 +562,7 @@ STUDIES.append({
     "plot": "lock_exchange",
 })
 
-GATE_LINEAR = "riemann, paper 002's linear solid correction"
+GATE_LINEAR = "riemann, paper 002's linear solid correction"   # the elastic solids' paper correction
 STUDIES.append({
     "id": "elastic-gate-antoci",
     "case": "elastic-gate-antoci",
@@ -582,4 +582,24 @@ STUDIES.append({
               rung(0.00125, 2, label=GATE_LINEAR, **{"solids.0.correction": "linear"}),
               rung(0.000625, 2, label=GATE_LINEAR, **{"solids.0.correction": "linear"})],
     "plot": "gate",
+})
+
+PLATE_003 = {"solids.0.min": "[0.292,-0.013]"}
+PLATE_REFERENCE = DATA.format(case="elastic-plate-walhorn", file="fsi_dambreak_elastic_plate_walhorn2005_numerical.csv")
+STUDIES.append({
+    "id": "elastic-plate-walhorn",
+    "case": "elastic-plate-walhorn",
+    "title": "Dam break against an elastic plate clamped to the floor (Walhorn et al. 2005 benchmark), to t = 0.5 s",
+    "length": ("b", 0.012),
+    "reference": "the first peak of the plate top's horizontal displacement in six published codes (PFEM, SPH, MPS, "
+                 "partitioned FEM), reference/fsi_dambreak_elastic_plate_walhorn2005_numerical.csv",
+    "error": "|u_peak / mean - 1| of the first peak (t <= 0.4 s) against the six codes' mean; threshold: the band the "
+             "six codes span (their largest deviation from that mean, 10.9 %)",
+    "threshold": metrics.plate_band(PLATE_REFERENCE),
+    "metric": functools.partial(metrics.plate_peak, reference=PLATE_REFERENCE),
+    # the plate's box a whole number of dx high, its root 4-8 rows into the floor (the case file's comment)
+    "rungs": [rung(0.003, 1, True, label="riemann", **PLATE_003), rung(0.002, 2, label="riemann"),
+              rung(0.0015, 2, label="riemann", **{"solids.0.min": "[0.292,-0.0115]"}),
+              rung(0.003, 1, label=GATE_LINEAR, **PLATE_003, **{"solids.0.correction": "linear"})],
+    "plot": "plate",
 })

@@ -1318,7 +1318,7 @@ static int phase_name_unique(const struct map *m, const struct case_def *c, int 
   return unique_name(m, c->phases[0].name, sizeof c->phases[0], i);
 }
 
-/* solids.N (read to clamp_max): max above min; the clamp box, when given, whole (both corners, max above min). */
+/* solids.N (read to clamp_max): max above min, a whole number of dx apart; the clamp box, when given, whole (both corners, max above min). */
 static int solid_boxes(const struct map *m, const struct case_def *c, int i) {
   const struct solid_def *s = &c->solids[i];
   char path[PATH_LEN], lo_path[PATH_LEN];
@@ -1327,6 +1327,12 @@ static int solid_boxes(const struct map *m, const struct case_def *c, int i) {
   if ((lo == NULL) != (hi == NULL))
     return fail(m->ld, lo ? lo : hi, lo ? lo_path : path, "got one corner of the clamp box, expected both "
                 "clamp_min and clamp_max");
+  for (int d = 0; d < m->ld->dim; d++) {
+    double layers = (s->max[d] - s->min[d]) / c->dx;
+    if (fabs(layers - round(layers)) > 1e-6 * layers)
+      return fail(m->ld, get(m, "max", path), path, "got a box %.6g particle spacings wide along axis %d, expected a "
+                  "whole number of resolution.dx (the particles fill it at min + (i + 1/2) dx)", layers, d);
+  }
   for (int d = 0; lo && d < m->ld->dim; d++)
     if (!(s->clamp_max[d] > s->clamp_min[d]))
       return fail(m->ld, hi, path, "got clamp_max not above clamp_min, expected clamp_max > clamp_min in every "

@@ -292,14 +292,10 @@ int engine_init(struct engine *e, const struct case_def *c, const char *outdir,
   e->next_checkpoint = c->checkpoint_interval;
   if (setup_space(e)) return 1;
   bodies_init(e);
-  if (restart && c->n_solids) {
-    report(e, "the case has solids: checkpoints do not hold the elastic solids' state in this version, "
-           "so it cannot restart; run it from the start");
-    return 1;
-  }
   if (solids_init(e)) return 1;
   int status = restart ? engine_checkpoint_read(e, restart) : engine_generate(e);
   if (!status && !restart) status = solids_add_particles(e);
+  if (!status && restart) status = solids_restarted(e, restart);
   if (status) return status;
   engine_assemble(e);
   if (restart && distribute_particles(e)) return 1;

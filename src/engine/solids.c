@@ -12,7 +12,7 @@
 static double *box_nodes(const struct case_def *c, const struct solid_def *k, int *n) {
   const int dim = c->dimension;
   long count[3] = {1, 1, 1};
-  for (int d = 0; d < dim; d++) count[d] = (long)floor((k->max[d] - k->min[d]) / c->dx + 1e-9);
+  for (int d = 0; d < dim; d++) count[d] = lround((k->max[d] - k->min[d]) / c->dx);   /* whole (case_load) */
   long total = count[0] * count[1] * count[2];
   double *x = mem_calloc((size_t)(total > 0 ? total : 1) * (size_t)dim, sizeof(double), "solid nodes");
   long m = 0;
@@ -245,6 +245,48 @@ int solids_advance(struct engine *e, double dt) {
   update_copies(e);
   S->substeps_total += S->substeps;
   S->advances++;
+  return 0;
+}
+
+int solids_arrays(struct engine *e, struct hdf5_array *v) {
+  static const char *const what[SOLID_ARRAYS] = {"x", "v", "acc", "F", "dF", "v_avg", "acc_avg"};
+  int n = 0;
+  for (int k = 0; k < e->solids.n; k++) {
+    struct solid_run *r = &e->solids.run[k];
+    struct elastic_solid *s = &r->s;
+    const long vec = (long)s->n * s->dim, mat = vec * s->dim;
+    double *at[SOLID_ARRAYS] = {s->x, s->v, s->acc, s->F, s->dF, s->v_avg, s->acc_avg};
+    const long size[SOLID_ARRAYS] = {vec, vec, vec, mat, mat, vec, vec};
+    for (int j = 0; j < SOLID_ARRAYS; j++) {
+      snprintf(r->names[j], sizeof r->names[j], "solid%d_%s", k, what[j]);
+      v[n++] = (struct hdf5_array){r->names[j], at[j], size[j]};
+    }
+  }
+  return n;
+}
+
+int solids_restarted(struct engine *e, const char *path) {
+  struct solids *S = &e->solids;
+  struct hdf5_array a[CASE_MAX_SOLIDS * SOLID_ARRAYS];
+  for (int k = 0, n = solids_arrays(e, a); k < n; k++)
+    for (long j = 0; j < a[k].n; j++)
+      if (!isfinite(a[k].at[j])) {
+        if (e->rank == 0)
+          fprintf(stderr, "mpsph: cannot restart from %s: /run/%s[%ld] is %g, expected a finite number\n", path,
+                  a[k].name, j, a[k].at[j]);
+        return 1;
+      }
+  if (!S->n) return 0;
+  double n_fluid, n_wall;
+  engine_global_counts(e, &n_fluid, &n_wall);
+  S->view.id0 = (int64_t)(n_fluid + n_wall);
+  const int dim = e->c->dimension;
+  for (int k = 0; k < S->n; k++) {
+    struct solid_run *r = &S->run[k];
+    elastic_update_normals(&r->s);
+    memcpy(S->v_avg + (size_t)r->first * dim, r->s.v_avg, (size_t)r->s.n * dim * sizeof(double));
+    memcpy(S->acc_avg + (size_t)r->first * dim, r->s.acc_avg, (size_t)r->s.n * dim * sizeof(double));
+  }
   return 0;
 }
 

@@ -127,8 +127,8 @@ static int header_rules(const struct engine *e, const struct case_def *c,
   r[n++] = integer_rule("/header/dimension", info->dimension, c->dimension, c->dimension,
                         "the dimension of its case");
   r[n++] = integer_rule("/header/n_particles", (double)info->n_particles, 1,
-                        floor(init_visit_count(c, e->prm.kern.support)),
-                        "at most the lattice nodes its case fills with fluid and ghosts");
+                        floor(init_visit_count(c, e->prm.kern.support)) + (double)e->solids.view.n,
+                        "at most the lattice nodes its case fills with fluid and ghosts, and its solids' particles");
   return n;
 }
 

@@ -12,6 +12,7 @@
 #include "io/outdir.h"
 
 #define MAX_NUMBERS (12 + CASE_MAX_WALLS * BODY_NUMBERS)
+#define MAX_ARRAYS (CASE_MAX_SOLIDS * SOLID_ARRAYS)
 
 /* The /run numbers: engine fields and the extras, as named pointers (for writing and reading). */
 static int run_numbers(struct engine *e, struct run_extras *x, struct hdf5_number *v) {
@@ -37,7 +38,8 @@ int engine_checkpoint_write(struct engine *e) {
   MPI_Bcast(&x.wall_seconds, 1, MPI_DOUBLE, 0, e->comm);   /* attributes: one value for all */
   MPI_Allreduce(&e->wall_guard_hits, &x.wall_guard_hits, 1, MPI_LONG, MPI_SUM, e->comm);
   struct hdf5_number v[MAX_NUMBERS];
-  struct checkpoint_extra extra = {run_numbers(e, &x, v), v, e->n_snapshots, e->snap_times,
+  struct hdf5_array a[MAX_ARRAYS];
+  struct checkpoint_extra extra = {run_numbers(e, &x, v), v, solids_arrays(e, a), a, e->n_snapshots, e->snap_times,
                                    e->snap_counts};
   struct snapshot_info info = engine_snapshot_info(e, e->time, e->step);
   double t0 = MPI_Wtime();
@@ -134,7 +136,8 @@ static void reschedule(struct engine *e, const struct case_def *old) {
 static int read_checked(struct engine *e, const char *path, const struct snapshot_info *info,
                         const struct case_def *old, struct run_extras *x, char *err, size_t len) {
   struct hdf5_number v[MAX_NUMBERS];
-  struct checkpoint_extra extra = {run_numbers(e, x, v), v, 0, NULL, NULL};
+  struct hdf5_array a[MAX_ARRAYS];
+  struct checkpoint_extra extra = {run_numbers(e, x, v), v, solids_arrays(e, a), a, 0, NULL, NULL};
   parts_init(&e->p, e->c->dimension, 1, e->c->n_walls > 0);
   int status = hdf5_read_run(path, &extra, e->comm, err, len);
   e->snap_times = extra.snapshot_times;     /* owned by e from here, read or not */

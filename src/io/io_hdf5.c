@@ -457,7 +457,15 @@ static int write_run(hid_t file, const struct checkpoint_extra *x, MPI_Comm comm
   struct layout L;
   series_fields(x, f);
   write_layout(rank == 0 ? x->n_snapshots : 0, sizeof(double), comm, &L);
-  return write_fields(file, f, 2, &L, comm, err, len);
+  st = write_fields(file, f, 2, &L, comm, err, len);
+  for (int k = 0; k < x->n_arrays && !st; k++) {
+    char name[MAX_FIELD_PATH];
+    snprintf(name, sizeof name, "/run/%s", x->arrays[k].name);
+    f[0] = real_field(name, x->arrays[k].at);
+    write_layout(rank == 0 ? x->arrays[k].n : 0, sizeof(double), comm, &L);
+    st = write_fields(file, f, 1, &L, comm, err, len);
+  }
+  return st;
 }
 
 /* Test hook, documented in doc/user-guide.md: with MPSPH_TEST_ABORT_IN_WRITE=NAME in the
@@ -679,7 +687,14 @@ static int read_run(hid_t file, struct checkpoint_extra *x, hid_t dxpl, MPI_Comm
   struct field f[2];
   series_fields(x, f);
   st = read_field(file, &f[0], n, 1, dxpl, NULL, comm, err, len);
-  return st ? st : read_field(file, &f[1], n, 1, dxpl, NULL, comm, err, len);
+  if (!st) st = read_field(file, &f[1], n, 1, dxpl, NULL, comm, err, len);
+  for (int k = 0; k < x->n_arrays && !st; k++) {
+    char name[MAX_FIELD_PATH];
+    snprintf(name, sizeof name, "/run/%s", x->arrays[k].name);
+    f[0] = real_field(name, x->arrays[k].at);
+    st = read_field(file, &f[0], x->arrays[k].n, 1, dxpl, NULL, comm, err, len);
+  }
+  return st;
 }
 
 /* Open path and read its run state (x not NULL: the /run group) or particles (p not NULL);
