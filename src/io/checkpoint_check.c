@@ -211,14 +211,17 @@ struct particle_bounds {
   char phase_why[160];        /* what the phase values mean, for the message */
 };
 
-/* The kinds besides fluid that p can hold (those of a wall only with the wall arrays): their
+/* The kinds besides fluid that p can hold (those of a wall only with the wall arrays, the solids'
+ * only in a case with solids): their
  * lowest marker and the words of the phase rule ("an index into phases, or -1 for a wall
  * ghost") into b. */
 static void held_kinds(const struct parts *p, struct particle_bounds *b) {
   size_t len = sizeof b->phase_why, at = (size_t)snprintf(b->phase_why, len, "an index into phases");
   b->lowest_phase = 0;
   for (int k = 0; k < KIND_COUNT; k++) {
-    if (k == KIND_FLUID || (!p->wall && (part_kinds[k].properties & KIND_ON_WALL))) continue;
+    if (k == KIND_FLUID || (!p->wall && (part_kinds[k].properties & KIND_ON_WALL)) ||
+        (k == KIND_SOLID && !b->c->n_solids))
+      continue;
     if (kind_marker(k) < b->lowest_phase) b->lowest_phase = kind_marker(k);
     if (at < len)
       at += (size_t)snprintf(b->phase_why + at, len - at, ", or %d for a %s", kind_marker(k), part_kinds[k].name);

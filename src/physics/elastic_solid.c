@@ -455,8 +455,8 @@ void elastic_deformation_rate(struct elastic_solid *s) {
 
 /* The Kelvin–Voigt pair stress's scalar factor for pair p of a and b (notes §1.9):
  * damping (W_ab/W0) (1/2) rho0 c_s h d (x_ab . v_ab)/|x0_ab|^2 [Pa], applied to (F_a + F_b)/2. */
-static double damping_factor(const struct elastic_solid *s, int p, int a, int b) {
-  const int dim = s->dim;
+static inline __attribute__((always_inline)) double damping_factor(const struct elastic_solid *s, int p, int a,
+                                                                     int b, const int dim) {
   double xv = 0;
   for (int d = 0; d < dim; d++) xv += (s->x[a * dim + d] - s->x[b * dim + d]) * (s->v[a * dim + d] - s->v[b * dim + d]);
   return s->mat.damping * s->nb_w_ratio[p] * 0.5 * s->mat.rho0 * s->c_s * s->k.h * dim * xv / s->nb_r0_sq[p];
@@ -538,7 +538,7 @@ static inline __attribute__((always_inline)) void acceleration(struct elastic_so
       }
       if (s->mat.damping > 0) {
         const double *F_b = s->F + (size_t)b * dd, *grad = s->nb_grad0 + (size_t)p * dim;
-        double half_factor = 0.5 * damping_factor(s, p, a, b);
+        double half_factor = 0.5 * damping_factor(s, p, a, b, dim);
         for (int r = 0; r < dim; r++)
           for (int c = 0; c < dim; c++) damping[r] += half_factor * (F_a[r * dim + c] + F_b[r * dim + c]) * grad[c];
       }
