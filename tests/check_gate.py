@@ -5,6 +5,11 @@
                                      horizontal force of the water on it, mean over t >= T0,
                                      within 2 % of the hydrostatic thrust rho0 g H^2 / 2 (H the
                                      height of fluid region 0), and every sample within 3 %
+  check_gate.py snapshot RUN         the last snapshot's /solids group agrees with the rest of the
+                                     run: the displacement of the probe's particle (the one whose
+                                     reference position is nearest the case's probe) equals
+                                     solids.csv's last row (its 12 digits), the stress is symmetric, and the solid
+                                     particles' pressures are -tr(sigma)/dim, to round-off
   check_gate.py early RUN            the elastic gate's free end over the experiment's points with
                                      t <= 0.1 s: |u_SPH - u_exp| within 15 % of max |u_exp| over
                                      0-0.4 s, horizontally and vertically (notes seed-002 section
@@ -13,6 +18,9 @@ Exit status 1 on a failed check."""
 import os
 import sys
 
+import glob
+
+import h5py
 import numpy as np
 import yaml
 
@@ -37,6 +45,33 @@ def hydrostatic(run, t0):
     return len(force) > 10 and abs(mean) < 0.02 and worst < 0.03
 
 
+def snapshot(run):
+    with open(os.path.join(run, "config.yaml")) as f:
+        case = yaml.safe_load(f)
+    probe, dim = np.array(case["solids"][0]["probe"]), case["dimension"]
+    with h5py.File(sorted(glob.glob(os.path.join(run, "snap_*.h5")))[-1], "r") as f:
+        t = float(f["header"].attrs["time"])
+        g = f["solids"]
+        x0 = g["solid0_reference_position"][:].reshape(-1, dim)
+        u = g["solid0_displacement"][:].reshape(-1, dim)
+        sigma = g["solid0_stress"][:].reshape(-1, dim, dim)
+        solid = f["particles/phase"][:] == -2
+        ids = f["particles/id"][:][solid]
+        pressure = f["particles/pressure"][:][solid][np.argsort(ids)]
+    s = metrics.read_csv(os.path.join(run, "solids.csv"))
+    k = int(np.argmin(np.linalg.norm(x0 - probe, axis=1)))
+    row = np.array([s["solid0_u" + "xyz"[d]][-1] for d in range(dim)])
+    scale = np.abs(sigma).max()
+    checks = [abs(s["time"][-1] - t) < 1e-12, np.abs(u[k] - row).max() <= 1e-10 * max(np.abs(row).max(), 1e-30),
+              np.abs(sigma - np.transpose(sigma, (0, 2, 1))).max() <= 1e-9 * scale,
+              np.abs(pressure + np.trace(sigma, axis1=1, axis2=2) / dim).max() <= 1e-12 * scale]
+    print("snapshot at t = %.6g s (solids.csv %.6g): probe displacement %s against %s; stress asymmetry %.3g, "
+          "pressure vs -tr(sigma)/dim %.3g, of %.3g Pa" % (
+              t, s["time"][-1], u[k], row, np.abs(sigma - np.transpose(sigma, (0, 2, 1))).max(),
+              np.abs(pressure + np.trace(sigma, axis1=1, axis2=2) / dim).max(), scale))
+    return all(checks)
+
+
 def early(run):
     got = metrics.gate_early(run, REFERENCE)
     if got is None:
@@ -48,6 +83,8 @@ def early(run):
 
 
 if __name__ == "__main__":
-    ok = hydrostatic(sys.argv[2], float(sys.argv[3])) if sys.argv[1] == "hydrostatic" else early(sys.argv[2])
+    mode = sys.argv[1]
+    ok = hydrostatic(sys.argv[2], float(sys.argv[3])) if mode == "hydrostatic" else \
+        snapshot(sys.argv[2]) if mode == "snapshot" else early(sys.argv[2])
     print("PASS" if ok else "FAIL")
     sys.exit(0 if ok else 1)

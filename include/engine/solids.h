@@ -16,6 +16,8 @@
 #include "physics/pass_ctx.h"
 
 #define SOLID_ARRAYS 7   /* checkpoint arrays of a solid: x, v, acc, F, dF, v_avg, acc_avg */
+#define SOLID_SNAPSHOT_ARRAYS 4   /* snapshot arrays of a solid: reference position, displacement,
+                                     Cauchy stress, von Mises stress */
 
 /** One solid of the run. */
 struct solid_run {
@@ -24,6 +26,10 @@ struct solid_run {
   int probe;                  /* its particle nearest to the case's probe point */
   double force[3];            /* the fluid's on the solid at the last coupling [N] (2D: [N/m]) */
   char names[SOLID_ARRAYS][32];   /* the checkpoint's names of its arrays */
+  char snapshot_names[SOLID_SNAPSHOT_ARRAYS][40];   /* the snapshots' */
+  double *displacement;       /* x - x0 (dim per particle) [m], filled for a snapshot */
+  double *stress;             /* Cauchy stress J^-1 P F^T (dim x dim per particle, in-plane in 2D) [Pa] */
+  double *von_mises;          /* von Mises stress of the full 3D stress (plane strain in 2D) [Pa] */
 };
 
 /** The solids of a run. */
@@ -58,6 +64,10 @@ int solids_advance(struct engine *e, double dt);
 /** The checkpoint arrays of the solids into v (named pointers to their state: what a continuation
  *  needs to take the same sub-steps); returns the count. */
 int solids_arrays(struct engine *e, struct hdf5_array *v);
+
+/** The snapshot arrays of the solids into v (their reference positions, and displacements and
+ *  stresses computed here from the current state); returns the count. */
+int solids_snapshot_arrays(struct engine *e, struct hdf5_array *v);
 
 /** After a restart read the solids' arrays and the particles: the first solid id, the current
  *  normals and the averaged state the pair passes read. Returns 0, or 1 with a message on rank 0

@@ -6,6 +6,15 @@
 #include <mpi.h>
 #include "base/parts.h"
 
+/** A named array that every rank holds alike (an elastic solid's, replicated): written by rank 0
+ *  as a dataset of n float64 in a group (/run of a checkpoint: read back whole by every rank into
+ *  at, its length checked; /solids of a snapshot). */
+struct hdf5_array {
+  const char *name;
+  double *at;
+  long n;
+};
+
 /** What goes into a snapshot's /header besides the particles. Filled by hdf5_read_header too:
  *  then the two strings are allocated and freed with hdf5_info_free. */
 struct snapshot_info {
@@ -15,6 +24,8 @@ struct snapshot_info {
   const char *case_yaml;     /* the fully resolved case, as YAML text */
   const char *code_version;
   long n_particles;          /* read only: /header/n_particles (written from the particles) */
+  int n_arrays;              /* write only: arrays written as /solids/<name> (0: no group) */
+  const struct hdf5_array *arrays;
 };
 
 /** A named number of a checkpoint's /run group (an attribute): exactly one of real (float64)
@@ -23,15 +34,6 @@ struct hdf5_number {
   const char *name;
   double *real;
   long *integer;
-};
-
-/** A named array of the run state that every rank holds alike (an elastic solid's, replicated):
- *  written by rank 0 as the dataset /run/<name> of n float64, read whole by every rank into at,
- *  its length checked. */
-struct hdf5_array {
-  const char *name;
-  double *at;
-  long n;
 };
 
 /** What a checkpoint holds beyond the snapshot layout: the run state as named numbers and

@@ -72,6 +72,10 @@ static int init_one(struct engine *e, int k, struct solid_run *r) {
     r->s.clamped[a] = (unsigned char)in_box(r->s.x0 + (size_t)a * c->dimension, def->clamp_min, def->clamp_max,
                                             c->dimension);
   r->probe = nearest(&r->s, def->probe);
+  const int dim = c->dimension;
+  r->displacement = mem_calloc((size_t)n * dim, sizeof(double), "solid displacements");
+  r->stress = mem_calloc((size_t)n * dim * dim, sizeof(double), "solid stresses");
+  r->von_mises = mem_calloc((size_t)n, sizeof(double), "solid von Mises stresses");
   return 0;
 }
 
@@ -248,6 +252,56 @@ int solids_advance(struct engine *e, double dt) {
   return 0;
 }
 
+/* The Cauchy stress of particle a of s in 3D (its deformation gradient with F_zz = 1 in 2D: plane
+ * strain) into sigma (3 x 3). */
+static void cauchy_3d(const struct elastic_solid *s, int a, double *sigma) {
+  const int dim = s->dim;
+  double F[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1}, P[9];
+  for (int r = 0; r < dim; r++)
+    for (int c = 0; c < dim; c++) F[3 * r + c] = s->F[(size_t)a * dim * dim + r * dim + c];
+  elastic_pk1(3, s->mat.model, s->lambda, s->shear, F, P);
+  double J = linalg_det(3, F);
+  for (int r = 0; r < 3; r++)
+    for (int c = 0; c < 3; c++) {
+      double sum = 0;
+      for (int k = 0; k < 3; k++) sum += P[3 * r + k] * F[3 * c + k];
+      sigma[3 * r + c] = sum / J;
+    }
+}
+
+/* Solid run r's displacements, stresses and von Mises stresses from its current state. */
+static void derived_state(struct solid_run *r) {
+  const struct elastic_solid *s = &r->s;
+  const int dim = s->dim;
+  for (int a = 0; a < s->n; a++) {
+    double sg[9];
+    cauchy_3d(s, a, sg);
+    for (int d = 0; d < dim; d++) r->displacement[a * dim + d] = s->x[a * dim + d] - s->x0[a * dim + d];
+    for (int i = 0; i < dim; i++)
+      for (int j = 0; j < dim; j++) r->stress[(size_t)a * dim * dim + i * dim + j] = sg[3 * i + j];
+    double dev = (sg[0] - sg[4]) * (sg[0] - sg[4]) + (sg[4] - sg[8]) * (sg[4] - sg[8]) + (sg[8] - sg[0]) * (sg[8] - sg[0]);
+    double shear = sg[1] * sg[1] + sg[2] * sg[2] + sg[5] * sg[5];
+    r->von_mises[a] = sqrt(0.5 * dev + 3.0 * shear);
+  }
+}
+
+int solids_snapshot_arrays(struct engine *e, struct hdf5_array *v) {
+  static const char *const what[SOLID_SNAPSHOT_ARRAYS] = {"reference_position", "displacement", "stress", "von_mises"};
+  int n = 0;
+  for (int k = 0; k < e->solids.n; k++) {
+    struct solid_run *r = &e->solids.run[k];
+    const long vec = (long)r->s.n * r->s.dim;
+    double *at[SOLID_SNAPSHOT_ARRAYS] = {r->s.x0, r->displacement, r->stress, r->von_mises};
+    const long size[SOLID_SNAPSHOT_ARRAYS] = {vec, vec, vec * r->s.dim, r->s.n};
+    derived_state(r);
+    for (int j = 0; j < SOLID_SNAPSHOT_ARRAYS; j++) {
+      snprintf(r->snapshot_names[j], sizeof r->snapshot_names[j], "solid%d_%s", k, what[j]);
+      v[n++] = (struct hdf5_array){r->snapshot_names[j], at[j], size[j]};
+    }
+  }
+  return n;
+}
+
 int solids_arrays(struct engine *e, struct hdf5_array *v) {
   static const char *const what[SOLID_ARRAYS] = {"x", "v", "acc", "F", "dF", "v_avg", "acc_avg"};
   int n = 0;
@@ -326,7 +380,12 @@ void solids_csv_row(const struct engine *e, FILE *f) {
 }
 
 void solids_free(struct solids *S) {
-  for (int k = 0; k < S->n; k++) elastic_solid_free(&S->run[k].s);
+  for (int k = 0; k < S->n; k++) {
+    elastic_solid_free(&S->run[k].s);
+    free(S->run[k].displacement);
+    free(S->run[k].stress);
+    free(S->run[k].von_mises);
+  }
   free(S->v_avg);
   free(S->acc_avg);
   free(S->loads.at);

@@ -190,6 +190,9 @@ struct snapshot_info engine_snapshot_info(const struct engine *e, double time, l
 static int write_named(struct engine *e, const char *name, double time, long step) {
   char *path = outdir_path(e->outdir, "%s", name), err[512];
   struct snapshot_info info = engine_snapshot_info(e, time, step);
+  struct hdf5_array solid_arrays[CASE_MAX_SOLIDS * SOLID_SNAPSHOT_ARRAYS];
+  info.n_arrays = solids_snapshot_arrays(e, solid_arrays);
+  info.arrays = solid_arrays;
   int status = hdf5_write_snapshot(path, &info, &e->p, e->comm, err, sizeof(err));
   if (status && e->rank == 0) fprintf(stderr, "mpsph: %s\n", err);
   if (!status && e->rank == 0) printf("wrote %s (t = %.9g s, step %ld)\n", path, time, step);
@@ -208,6 +211,9 @@ int engine_write_failure(struct engine *e) {
 static int write_snapshot(struct engine *e) {
   char *path = outdir_path(e->outdir, OUTDIR_SNAPSHOT_NAME, e->n_snapshots), err[512];
   struct snapshot_info info = engine_snapshot_info(e, e->time, e->step);
+  struct hdf5_array solid_arrays[CASE_MAX_SOLIDS * SOLID_SNAPSHOT_ARRAYS];
+  info.n_arrays = solids_snapshot_arrays(e, solid_arrays);
+  info.arrays = solid_arrays;
   double t0 = MPI_Wtime();
   int status = hdf5_write_snapshot(path, &info, &e->p, e->comm, err, sizeof(err));
   free(path);

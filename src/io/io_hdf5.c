@@ -444,6 +444,22 @@ static void series_fields(const struct checkpoint_extra *x, struct field *f) {
   f[1] = long_field("/run/snapshot_particles", H5T_NATIVE_LONG, x->snapshot_counts);
 }
 
+/* The replicated arrays a[0, n) as datasets /<group>/<name> written by rank 0; 0 or 3. */
+static int write_arrays(hid_t file, const char *group, const struct hdf5_array *a, int n, MPI_Comm comm, char *err,
+                        size_t len) {
+  int rank, st = 0;
+  MPI_Comm_rank(comm, &rank);
+  for (int k = 0; k < n && !st; k++) {
+    char name[MAX_FIELD_PATH];
+    struct layout L;
+    snprintf(name, sizeof name, "/%s/%s", group, a[k].name);
+    struct field f = real_field(name, a[k].at);
+    write_layout(rank == 0 ? a[k].n : 0, sizeof(double), comm, &L);
+    st = write_fields(file, &f, 1, &L, comm, err, len);
+  }
+  return st;
+}
+
 /* Create /run: the numbers as attributes, and the snapshot series written by rank 0; 0 or 3. */
 static int write_run(hid_t file, const struct checkpoint_extra *x, MPI_Comm comm, char *err,
                      size_t len) {
@@ -458,14 +474,7 @@ static int write_run(hid_t file, const struct checkpoint_extra *x, MPI_Comm comm
   series_fields(x, f);
   write_layout(rank == 0 ? x->n_snapshots : 0, sizeof(double), comm, &L);
   st = write_fields(file, f, 2, &L, comm, err, len);
-  for (int k = 0; k < x->n_arrays && !st; k++) {
-    char name[MAX_FIELD_PATH];
-    snprintf(name, sizeof name, "/run/%s", x->arrays[k].name);
-    f[0] = real_field(name, x->arrays[k].at);
-    write_layout(rank == 0 ? x->arrays[k].n : 0, sizeof(double), comm, &L);
-    st = write_fields(file, f, 1, &L, comm, err, len);
-  }
-  return st;
+  return st ? st : write_arrays(file, "run", x->arrays, x->n_arrays, comm, err, len);
 }
 
 /* Test hook, documented in doc/user-guide.md: with MPSPH_TEST_ABORT_IN_WRITE=NAME in the
@@ -492,6 +501,12 @@ static int write_file(const char *tmp, const struct snapshot_info *info, const s
   if (!st) st = agree(g < 0 ? fail(err, len, "cannot create group /particles") : 0, comm, err, len);
   if (g >= 0) H5Gclose(g);
   if (!st) st = write_fields(file, fields, n, &L, comm, err, len);
+  if (!st && info->n_arrays) {
+    g = H5Gcreate2(file, "solids", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+    st = agree(g < 0 ? fail(err, len, "cannot create group /solids") : 0, comm, err, len);
+    if (g >= 0) H5Gclose(g);
+    if (!st) st = write_arrays(file, "solids", info->arrays, info->n_arrays, comm, err, len);
+  }
   if (!st && extra) st = write_run(file, extra, comm, err, len);
   /* collective: the metadata out, then MPI_File_sync, so that a write the system reports late
    * (NFS, quotas) fails here, before the rename */
@@ -538,7 +553,10 @@ static double file_bytes(const struct snapshot_info *info, const struct parts *p
   MPI_Allreduce(&rows, &total, 1, MPI_DOUBLE, MPI_SUM, comm);
   double text = (info->case_yaml ? strlen(info->case_yaml) : 0) +
                 (info->code_version ? strlen(info->code_version) : 0);
-  return total * row + text + (extra ? 16.0 * extra->n_snapshots : 0) + METADATA_BYTES;
+  double arrays = 0;
+  for (int k = 0; k < info->n_arrays; k++) arrays += 8.0 * (double)info->arrays[k].n;
+  for (int k = 0; extra && k < extra->n_arrays; k++) arrays += 8.0 * (double)extra->arrays[k].n;
+  return total * row + text + arrays + (extra ? 16.0 * extra->n_snapshots : 0) + METADATA_BYTES;
 }
 
 /* Collective: 0, or 3 on every rank when rank 0 finds less free space than `bytes` in the file
