@@ -30,7 +30,11 @@
  *     to minus sum_i m_i du_i/dt (every fluid-solid pair once, on any rank count; the fluid pairs
  *     cancel) to round-off; and with every fluid velocity and the solid's averaged velocity shifted
  *     by the same V, du/dt and drho/dt are unchanged to round-off (the dummy velocity 2 v~ - v_i
- *     makes the treatment Galilean invariant).
+ *     makes the treatment Galilean invariant);
+ *  9. the penalty force (paper 002 Eqs. 21-23, physics.light_penalty): a gas particle of a closed
+ *     tank at rest and uniform pressure pushed to 0.1 dx from the lid: its du/dt with the penalty
+ *     less that without is the sum over the lid's ghosts -(2/rho_i) V_a Gamma n_a W'(r) to
+ *     round-off (brute force here), points away from the lid, and no other particle's changes.
  * Usage: test_riemann */
 #include <math.h>
 #include <stdio.h>
@@ -99,6 +103,19 @@ static const char *solid_case =
     "  - {phase: water, box: {min: [0, 0], max: [1, 0.5]}}\n"
     "solids:\n"
     "  - {min: [0, -0.08], max: [1, 0], rho0: 1100, youngs_modulus: 1e6, poisson_ratio: 0.3, probe: [0.5, -0.04]}\n"
+    CASE_TAIL;
+
+/* Test 9: water under a gas in a closed tank, at rest. */
+static const char *penalty_case =
+    "name: riemann-penalty-test\n" UNIT_BOX_HEAD
+    "phases:\n"
+    "  - {name: water, rho0: 1000, c0: 20, gamma: 1, incompressible: true, p_background: 5000}\n"
+    "  - {name: gas, rho0: 1, c0: 20, gamma: 1, p_background: 5000, density_band: [0.5, 2000]}\n"
+    "fluids:\n"
+    "  - {phase: water, box: {min: [0, 0], max: [1, 0.5]}}\n"
+    "  - {phase: gas, box: {min: [0, 0.5], max: [1, 1]}}\n"
+    "walls:\n"
+    "  - {box: {min: [0, 0], max: [1, 1]}, slip: no}\n"
     CASE_TAIL;
 
 /* Test 7: two liquids whose lattices are offset by (dx/2, dx/2) (anchors at their boxes' corners). */
@@ -358,6 +375,63 @@ static void check_solid_wall(struct engine *e) {
   free(moved);
 }
 
+/* The penalty of the lid's ghosts on gas particle i by brute force (doc/theory.md section 14). */
+static void penalty_expected(const struct engine *e, long i, double k, double *acc) {
+  const struct parts *p = &e->p;
+  acc[0] = acc[1] = 0;
+  for (long j = 0; j < p->n_owned + p->n_halo; j++) {
+    double dx[3], r2 = pair_separation(p, 2, i, j, dx);
+    if (p->phase[j] != PHASE_WALL || r2 >= e->prm.kern.support2) continue;
+    double m = hypot(p->mirror[0][j], p->mirror[1][j]), n[2] = {p->mirror[0][j] / m, p->mirror[1][j] / m};
+    double r = sqrt(r2), rn = dx[0] * n[0] + dx[1] * n[1], beta = 2 * rn / e->prm.h;
+    if (beta > 1) continue;
+    double gamma = k * fabs(p->p[i] * rn / r) * (1 - beta) * (1 - beta), dw = kernel_f(&e->prm.kern, r2) * r;
+    for (int d = 0; d < 2; d++) acc[d] -= 2.0 / p->rho[i] * e->prm.vol0 * gamma * n[d] * dw;
+  }
+}
+
+static void check_penalty(struct engine *e, struct case_def *c) {
+  set_fields(e, 0);
+  const double dx = e->c->dx;
+  long target = -1;   /* the gas particle at (0.5 - dx/2, 1 - dx/2), in the row under the lid */
+  for (long i = 0; i < e->p.n_owned; i++)
+    if (e->p.phase[i] == 1 && fabs(e->p.x[0][i] - (0.5 - dx / 2)) < 1e-9 && fabs(e->p.x[1][i] - (1 - dx / 2)) < 1e-9)
+      target = e->p.id[i];
+  MPI_Allreduce(MPI_IN_PLACE, &target, 1, MPI_LONG, MPI_MAX, e->comm);
+  CHECK(target >= 0, "the gas particle at the lid");
+  for (long i = 0; i < e->p.n_owned; i++)
+    if (e->p.id[i] == target) e->p.x[1][i] = 1.0 - 0.1 * dx;
+  engine_test_rebuild(e);
+  const long n = e->p.n_owned;
+  double *without = calloc(2 * (size_t)n + 1, sizeof(double)), worst_other = 0, got[2] = {0, 0}, want[2] = {0, 0};
+  c->light_penalty = 0;
+  run_pass(e, "Riemann momentum");
+  for (long i = 0; i < n; i++)
+    for (int d = 0; d < 2; d++) without[2 * i + d] = e->w.dv[d][i];
+  c->light_penalty = 0.01;
+  run_pass(e, "Riemann momentum");
+  for (long i = 0; i < n; i++) {
+    if (e->p.phase[i] < 0) continue;
+    if (e->p.id[i] != target) {
+      for (int d = 0; d < 2; d++) worst_other = fmax(worst_other, fabs(e->w.dv[d][i] - without[2 * i + d]));
+      continue;
+    }
+    for (int d = 0; d < 2; d++) got[d] = e->w.dv[d][i] - without[2 * i + d];
+    penalty_expected(e, i, 0.01, want);
+  }
+  MPI_Allreduce(MPI_IN_PLACE, got, 2, MPI_DOUBLE, MPI_SUM, e->comm);
+  MPI_Allreduce(MPI_IN_PLACE, want, 2, MPI_DOUBLE, MPI_SUM, e->comm);
+  MPI_Allreduce(MPI_IN_PLACE, &worst_other, 1, MPI_DOUBLE, MPI_MAX, e->comm);
+  if (e->rank == 0)
+    printf("penalty at 0.1 dx from the lid: (%.6g, %.6g) m/s^2, brute force (%.6g, %.6g); largest change elsewhere %g\n",
+           got[0], got[1], want[0], want[1], worst_other);
+  CHECK(got[1] < 0 && fabs(got[1]) > 1.0, "the penalty pushes off the lid: %g", got[1]);
+  CHECK(fabs(got[0] - want[0]) <= 1e-12 * fabs(want[1]) && fabs(got[1] - want[1]) <= 1e-12 * fabs(want[1]),
+        "penalty (%g, %g) against (%g, %g)", got[0], got[1], want[0], want[1]);
+  CHECK(worst_other == 0, "no other particle's du/dt changes: %g", worst_other);
+  free(without);
+}
+
 /* Every fluid particle at rest density with velocity (u, 0). */
 static void uniform_flow(struct engine *e, double u) {
   struct parts *p = &e->p;
@@ -419,9 +493,13 @@ int main(int argc, char **argv) {
   check_walls(&e2);
   engine_close_output(&e2);
   engine_free(&e2);
-  char dir4[256] = "/tmp/mpsph-test-riemann4-XXXXXX";
-  static struct case_def c4;
-  struct engine e4;
+  char dir4[256] = "/tmp/mpsph-test-riemann4-XXXXXX", dir5[256] = "/tmp/mpsph-test-riemann5-XXXXXX";
+  static struct case_def c4, c5;
+  struct engine e4, e5;
+  if (engine_test_open(dir5, sizeof dir5, penalty_case, &c5, &e5)) return check_report("test_riemann");
+  check_penalty(&e5, &c5);
+  engine_close_output(&e5);
+  engine_free(&e5);
   if (engine_test_open(dir4, sizeof dir4, solid_case, &c4, &e4)) return check_report("test_riemann");
   check_solid_wall(&e4);
   engine_close_output(&e4);
@@ -436,7 +514,7 @@ int main(int argc, char **argv) {
   check_stepper(&e1);
   if (rank == 0) {
     char cmd[900];
-    snprintf(cmd, sizeof cmd, "rm -rf '%s' '%s' '%s' '%s'", dir, dir2, dir3, dir4);
+    snprintf(cmd, sizeof cmd, "rm -rf '%s' '%s' '%s' '%s' '%s'", dir, dir2, dir3, dir4, dir5);
     if (system(cmd)) printf("could not remove %s, %s, %s\n", dir, dir2, dir3);
   }
   return engine_test_finish(&e1, dir1, "test_riemann");

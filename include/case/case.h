@@ -208,6 +208,8 @@ struct case_def {
   int limit_surface_shifting;   /* apply the 0.5 U_max limiter in the free-surface region too */
   double surface_tension;    /* sigma between the fluid phases (CSF, Adami et al. 2010) [N/m], 0 = off */
   double wall_guard;         /* normal-velocity correction within this many dx of a wall, 0 = off */
+  double light_penalty;      /* scheme riemann: prefactor of paper 002's penalty force on light
+                                phases at walls and solids (Eqs. 21-23), 0 = off [-] */
   enum dissipation_form dissipation_form;   /* scheme generalized-dissipation: paper 004 Eq. 49 as
                                                printed, or its dimensionally consistent form */
   /* parallel */

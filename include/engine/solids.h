@@ -37,7 +37,7 @@ struct solids {
   int n;
   struct solid_run run[CASE_MAX_SOLIDS];
   struct solid_view view;     /* what the pair passes read (its arrays: v_avg, acc_avg) */
-  double *v_avg, *acc_avg;    /* every solid's, concatenated (dim per particle) */
+  double *v_avg, *acc_avg, *normal;   /* every solid's, concatenated (dim per particle) */
   struct body_loads loads;    /* appended by the momentum pass on this rank */
   struct load_gather gather;
   long substeps;              /* solid sub-steps of the last fluid sub-step (largest over solids) */

@@ -75,6 +75,7 @@ struct solid_view {
   const double *v;                 /* velocity averaged over the last fluid sub-step, dim per
                                       particle (the wall velocity the fluid sees) [m/s] */
   const double *a;                 /* the change of that average over the sub-step / its length [m/s^2] */
+  const double *normal;            /* current unit surface normal, dim per particle (0 deep inside) [-] */
 };
 
 /** Work arrays of the scheme, sized to the particle capacity (those read at halo slots) or to

@@ -1534,6 +1534,10 @@ static const struct case_key CASE_KEYS[] = {
              .doc = "the laminar viscosity between phases (see below)"),
     CASE_KEY("physics", "surface_tension", KEY_NUMBER, surface_tension, .rule = &R_NONNEGATIVE,
              .doc = "σ between the fluid phases (see below); `0`: off [N/m]"),
+    CASE_KEY("physics", "light_penalty", KEY_NUMBER, light_penalty, .rule = &R_NONNEGATIVE,
+             .doc = "scheme riemann: the prefactor of paper 002's penalty force that keeps light-phase particles off "
+             "walls and solids (doc/theory.md §14); the paper's is `0.01`; `0`: off (the default, as the riemann "
+             "studies were measured) [-]"),
     CASE_KEY("physics", "wall_guard", KEY_NUMBER, wall_guard, .rule = &R_NONNEGATIVE, .def = {WALL_GUARD_DX},
              .doc = "distance from a wall within which velocity into it is removed (see below); `0`: off [Δx]"),
     CASE_KEY("physics", "spc_model", KEY_CHOICE, spc_model, .names = SPC_MODEL_NAMES, .def = {SPC_PRESENT},

@@ -79,6 +79,17 @@ static int init_one(struct engine *e, int k, struct solid_run *r) {
   return 0;
 }
 
+/* Every solid's averaged velocity and acceleration and current normals into the view's arrays. */
+static void publish(struct solids *S, int dim) {
+  for (int k = 0; k < S->n; k++) {
+    const struct solid_run *r = &S->run[k];
+    const size_t at = (size_t)r->first * dim, bytes = (size_t)r->s.n * dim * sizeof(double);
+    memcpy(S->v_avg + at, r->s.v_avg, bytes);
+    memcpy(S->acc_avg + at, r->s.acc_avg, bytes);
+    memcpy(S->normal + at, r->s.normal, bytes);
+  }
+}
+
 int solids_init(struct engine *e) {
   struct solids *S = &e->solids;
   memset(S, 0, sizeof *S);
@@ -93,7 +104,9 @@ int solids_init(struct engine *e) {
   const int dim = e->c->dimension;
   S->v_avg = mem_calloc((size_t)total * dim, sizeof(double), "solid velocities");
   S->acc_avg = mem_calloc((size_t)total * dim, sizeof(double), "solid accelerations");
-  S->view = (struct solid_view){.id0 = -1, .n = total, .v = S->v_avg, .a = S->acc_avg};
+  S->normal = mem_calloc((size_t)total * dim, sizeof(double), "solid normals");
+  S->view = (struct solid_view){.id0 = -1, .n = total, .v = S->v_avg, .a = S->acc_avg, .normal = S->normal};
+  publish(S, dim);
   load_gather_init(&S->gather, e->n_ranks);
   return 0;
 }
@@ -243,9 +256,8 @@ int solids_advance(struct engine *e, double dt) {
     }
     if (kappa > S->substeps) S->substeps = kappa;
     elastic_update_normals(&r->s);
-    memcpy(S->v_avg + (size_t)r->first * dim, r->s.v_avg, (size_t)r->s.n * dim * sizeof(double));
-    memcpy(S->acc_avg + (size_t)r->first * dim, r->s.acc_avg, (size_t)r->s.n * dim * sizeof(double));
   }
+  publish(S, dim);
   update_copies(e);
   S->substeps_total += S->substeps;
   S->advances++;
@@ -334,13 +346,8 @@ int solids_restarted(struct engine *e, const char *path) {
   double n_fluid, n_wall;
   engine_global_counts(e, &n_fluid, &n_wall);
   S->view.id0 = (int64_t)(n_fluid + n_wall);
-  const int dim = e->c->dimension;
-  for (int k = 0; k < S->n; k++) {
-    struct solid_run *r = &S->run[k];
-    elastic_update_normals(&r->s);
-    memcpy(S->v_avg + (size_t)r->first * dim, r->s.v_avg, (size_t)r->s.n * dim * sizeof(double));
-    memcpy(S->acc_avg + (size_t)r->first * dim, r->s.acc_avg, (size_t)r->s.n * dim * sizeof(double));
-  }
+  for (int k = 0; k < S->n; k++) elastic_update_normals(&S->run[k].s);
+  publish(S, e->c->dimension);
   return 0;
 }
 
@@ -388,6 +395,7 @@ void solids_free(struct solids *S) {
   }
   free(S->v_avg);
   free(S->acc_avg);
+  free(S->normal);
   free(S->loads.at);
   if (S->n) load_gather_free(&S->gather);
   memset(S, 0, sizeof *S);

@@ -16,6 +16,11 @@
  * a~_a).(r_a - r_i)), v_a = 2 v~_a - v_i, v~_a and a~_a the solid's velocity averaged over the last
  * fluid sub-step and its change (struct solid_view), its own volume m_a/rho_a, and the pair force's
  * reaction -m_i dv_i(pair) a load on the solid (the Riemann axis stays the pair's, as for the walls).
+ * Penalty (Eqs. 21-23 with the notes' A4, A5; light phases, physics.light_penalty k): a boundary
+ * particle a (wall ghost or solid particle) with the unit normal n_a into the fluid (a ghost's mirror
+ * direction, a solid's current normal) and beta = 2 (r_i - r_a).n_a / h <= 1 adds to du_i/dt
+ *   -(2/rho_i) V_a Gamma n_a W'(r),  Gamma = k |p_i e_ia.n_a| (1 - beta)^2,
+ * with no reaction (single resolution: h_S = h^chi = h).
  * Transport velocity (Eq. 12, light phases, notes A10): a_tv,i = -(2 p0_tv/rho_i) sum_j V_j grad_i W_ij. */
 #include <math.h>
 #include "physics/eos.h"
@@ -27,6 +32,7 @@
 struct rcentre {
   long i;
   int phase;
+  double penalty;   /* physics.light_penalty for a light-phase particle, else 0 */
   double x[3], v[3], a[3], rho, p, z, c, eta;
 };
 
@@ -58,6 +64,30 @@ static inline double solid_dummy(const struct pass_ctx *ctx, const struct rcentr
     vj[d] = 2.0 * vs[d] - ci->v[d];
   }
   return ci->p + ci->rho * fmax(0.0, head);
+}
+
+/* The unit normal n (into the fluid) of boundary particle j: a solid particle's current normal, a
+ * wall ghost's mirror direction; 0 when it has none (a solid particle deep inside). */
+static inline void boundary_normal(const struct pass_ctx *ctx, long j, int solid, double *n, const int dim) {
+  const struct parts *p = ctx->p;
+  double n2 = 0;
+  for (int d = 0; d < dim; d++) {
+    n[d] = solid ? ctx->solids->normal[(p->id[j] - ctx->solids->id0) * dim + d] : p->mirror[d][j];
+    n2 += n[d] * n[d];
+  }
+  for (int d = 0; d < dim; d++) n[d] = n2 > 0 ? n[d] / sqrt(n2) : 0.0;
+}
+
+/* The penalty factor V_a Gamma_ia W'(r)/r (times n_a and -2/rho_i it is the acceleration) of boundary
+ * particle j for light particle i at dx = r_i - r_j, r = |dx|, fv = V_a W'(r)/r; n_a into n. */
+static inline double penalty_of(const struct pass_ctx *ctx, const struct rcentre *ci, long j, int solid,
+                                const double *dx, double r, double fv, double *n, const int dim) {
+  double rn = 0;
+  boundary_normal(ctx, j, solid, n, dim);
+  for (int d = 0; d < dim; d++) rn += dx[d] * n[d];
+  double beta = 2.0 * rn / ctx->prm->h;
+  if (beta > 1.0) return 0.0;
+  return ci->penalty * fabs(ci->p * rn / r) * (1.0 - beta) * (1.0 - beta) * fv * r;
 }
 
 /* The Riemann sums of i: the momentum sums (pressure, viscous) when MOMENTUM, else the continuity
@@ -111,6 +141,10 @@ static inline __attribute__((always_inline)) void riemann_sums(const struct pass
           dv_pair[d] = 2.0 * (eta * fv * (ci->v[d] - vj[d]) - pstar * fv * dx[d]) / ci->rho;
         }
         if (solid) body_load_append(ctx->solid_loads, p, ci->i, (int)g, LOAD_PAIRS, dv_pair);
+        if (wall && ci->penalty > 0) {
+          double n[3], pen = penalty_of(ctx, ci, j, solid, dx, r, fv, n, dim);
+          for (int d = 0; d < dim; d++) gp[d] += pen * n[d];   /* -(2/rho_i) pen n: as a pressure term */
+        }
       } else {
         dr += fv * (zj * vdx + r * (ci->p - pj)) / (ci->z + zj);
       }
@@ -140,6 +174,7 @@ static void centre_of(const struct pass_ctx *ctx, long i, struct rcentre *ci) {
   ci->c = f->c0;
   ci->z = ci->rho * ci->c;
   ci->eta = f->viscosity;
+  ci->penalty = riemann_light_phase(ctx->c, ci->phase) ? ctx->c->light_penalty : 0.0;
 }
 
 /* The sums of i in the specialisation for the dimension. */
