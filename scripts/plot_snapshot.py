@@ -4,7 +4,8 @@
 usage: plot_snapshot.py SNAP.h5 OUT.png [--color pressure|phase|velocity] [--walls]
 
 Particles are coloured by pressure [Pa], phase index or speed |velocity| [m/s]; wall
-particles (phase -1) are left out unless --walls draws them in grey. The title gives the
+particles (phase -1) are left out unless --walls draws them in grey; an elastic solid's
+particles (phase -2) are drawn in black. The title gives the
 case name and the time from the snapshot header. 3D snapshots are projected onto x-y.
 """
 import argparse
@@ -21,6 +22,7 @@ from matplotlib.colors import BoundaryNorm, ListedColormap  # noqa: E402
 from mpl_toolkits.axes_grid1 import make_axes_locatable  # noqa: E402
 
 PHASE_WALL = -1
+PHASE_SOLID = -2
 
 
 def case_name(case_yaml):
@@ -67,11 +69,13 @@ def marker_size(xy, spacing, axes_points=(450.0, 380.0)):
 def plot(path, out, field, walls):
     """Draw the snapshot at path into the PNG out."""
     xy, phase, spacing, fields, header = load(path)
-    fluid, wall = phase != PHASE_WALL, phase == PHASE_WALL
+    fluid, wall, solid = phase >= 0, phase == PHASE_WALL, phase == PHASE_SOLID
     size = marker_size(xy, spacing)
     fig, ax = plt.subplots(figsize=(8, 6))
     if walls and wall.any():
         ax.scatter(xy[wall, 0], xy[wall, 1], s=size, c="0.6", linewidths=0)
+    if solid.any():
+        ax.scatter(xy[solid, 0], xy[solid, 1], s=size, c="k", linewidths=0)
     kwargs, label, ticks = colouring(field, fields[field][fluid])
     sc = ax.scatter(xy[fluid, 0], xy[fluid, 1], s=size, c=fields[field][fluid], linewidths=0,
                     **kwargs)

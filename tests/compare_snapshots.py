@@ -3,7 +3,8 @@
 
 Usage: compare_snapshots.py DIR_A DIR_B     every snap_*.h5 of A with the same-named one of B
        compare_snapshots.py FILE_A FILE_B   two snapshots (or checkpoints)
-Exit 0 when every snapshot has the same time, step and bitwise-identical particle data.
+Exit 0 when every snapshot has the same time, step and bitwise-identical particle data, and the
+same replicated solid arrays (/solids/* of snapshots, /run/solid* of checkpoints) when present.
 """
 import glob
 import os
@@ -19,6 +20,10 @@ def load(path):
     with h5py.File(path, "r") as f:
         order = np.argsort(f["particles/id"][:], kind="stable")
         data = {k: f["particles/" + k][:][order] for k in FIELDS}
+        for group in ("solids", "run"):
+            for name in (f[group].keys() if group in f else ()):
+                if group == "solids" or name.startswith("solid"):
+                    data["%s/%s" % (group, name)] = f[group][name][:]
         head = (float(f["header"].attrs["time"]), int(f["header"].attrs["step"]))
     return head, data
 
@@ -39,8 +44,11 @@ def main(a, b):
         if head_a != head_b:
             print(f"{os.path.basename(fa)}: header (time, step) {head_a} vs {head_b}")
             bad += 1
-        for k in FIELDS:
-            if da[k].shape != db[k].shape or not np.array_equal(da[k], db[k]):
+        for k in sorted(set(da) | set(db)):
+            if k not in da or k not in db:
+                print(f"{os.path.basename(fa)}: {k} in one file only")
+                bad += 1
+            elif da[k].shape != db[k].shape or not np.array_equal(da[k], db[k]):
                 diff = np.max(np.abs(da[k] - db[k])) if da[k].shape == db[k].shape else "shape"
                 print(f"{os.path.basename(fa)}: {k} differs (max |diff| {diff})")
                 bad += 1

@@ -15,7 +15,8 @@
 #include "physics/elastic_solid.h"
 #include "physics/pass_ctx.h"
 
-#define SOLID_ARRAYS 7   /* checkpoint arrays of a solid: x, v, acc, F, dF, v_avg, acc_avg */
+#define SOLID_ARRAYS 9   /* checkpoint arrays of a solid: x, v, acc, F, dF, v_avg, acc_avg, the
+                            last advance's length, the fluid's force */
 #define SOLID_SNAPSHOT_ARRAYS 4   /* snapshot arrays of a solid: reference position, displacement,
                                      Cauchy stress, von Mises stress */
 
@@ -25,6 +26,7 @@ struct solid_run {
   long first;                 /* index g of its particle 0 (its id is view.id0 + first) */
   int probe;                  /* its particle nearest to the case's probe point */
   double force[3];            /* the fluid's on the solid at the last coupling [N] (2D: [N/m]) */
+  double *x_start;            /* positions at the start of the advection step [m] */
   char names[SOLID_ARRAYS][32];   /* the checkpoint's names of its arrays */
   char snapshot_names[SOLID_SNAPSHOT_ARRAYS][40];   /* the snapshots' */
   double *displacement;       /* x - x0 (dim per particle) [m], filled for a snapshot */
@@ -71,11 +73,19 @@ int solids_snapshot_arrays(struct engine *e, struct hdf5_array *v);
 
 /** After a restart read the solids' arrays and the particles: the first solid id, the current
  *  normals and the averaged state the pair passes read. Returns 0, or 1 with a message on rank 0
- *  when an array read holds a value that is not finite (the same on every rank). Collective. */
+ *  when an array read holds a value that is not finite, or the solid particles read are not the
+ *  case's (their count, their ids), the same on every rank. Collective. */
 int solids_restarted(struct engine *e, const char *path);
 
 /** The largest speed of a solid particle [m/s] (the same on every rank). */
 double solids_max_speed(const struct engine *e);
+
+/** At the start of an advection step: the solids' positions from which solids_motion measures. */
+void solids_step_start(struct engine *e);
+
+/** Raise m[0] (speed [m/s]), m[1] (acceleration [m/s^2]) and m[2] (displacement since
+ *  solids_step_start [m]) to the solids' largest (the same on every rank). */
+void solids_motion(const struct engine *e, double *m);
 
 /** The solids.csv header and one row: step, time, then per solid the probe particle's
  *  displacement, the fluid's force on the solid and the solid's kinetic plus strain energy. */

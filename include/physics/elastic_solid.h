@@ -65,6 +65,7 @@ struct elastic_solid {
   double *x_step;         /* positions at the start of the last elastic_advance [m] */
   double *v_avg, *acc_avg;  /* velocity and acceleration averaged over the last elastic_advance,
                                the wall's state the fluid sees (notes §1.7) [m/s], [m/s^2] */
+  double dt_avg;          /* the length of the last elastic_advance (0 before the first) [s] */
   int *nb_first;          /* reference neighbours of a: nb[nb_first[a] .. nb_first[a+1]) */
   int *nb;
   int *nb_reverse;        /* the pair (b, a) of pair (a, b): its index in b's list */
@@ -125,7 +126,9 @@ double elastic_time_step(const struct elastic_solid *s);
 /** Advance the solid by one fluid step dt > 0 [s] in kappa = floor(dt / Delta t_s) + 1 equal
  *  sub-steps (notes §1.10; Delta t_s from elastic_time_step at the start, whose acceleration part
  *  is that of the last sub-step, before a new acc_ext) with acc_ext held, and set
- *  v_avg = (x_end - x_start)/dt and acc_avg = (v_avg_new - v_avg_old)/dt. Returns kappa, or -1
+ *  v_avg = (x_end - x_start)/dt and acc_avg = (v_avg_new - v_avg_old)/((dt_prev + dt)/2), the
+ *  time between the two averages' centres (dt_prev the previous advance's length, dt before
+ *  the first). Returns kappa, or -1
  *  (nothing done) for dt not positive or a time step that is not a number or too small. */
 int elastic_advance(struct elastic_solid *s, double dt, const double *g);
 

@@ -1,5 +1,6 @@
 /* engine_step_dual.c — dual-criteria time stepping of scheme riemann (paper 002 section 2.5,
- * Eqs. 24-28; notes seed-002 section 1.10), single resolution, fluids only. One engine step is one
+ * Eqs. 24-28; notes seed-002 section 1.10), single resolution, with the elastic solids advanced
+ * after each acoustic sub-step (engine/solids.h). One engine step is one
  * advection step dt_ad: the cells and neighbour lists (built by engine_rebuild after the previous
  * step), the density re-initialisation and the transport-velocity shift of the light phases belong
  * to it; inside it, acoustic sub-steps dt_ac of position Verlet,
@@ -212,6 +213,7 @@ static int advection_start(struct engine *e) {
     for (int d = 0; d < p->dim; d++) e->w.dv[d][i] = 0;
   for (int id = OP_STATE_HALO; id <= OP_REINIT_HALO; id++) run(e, id);
   double a_tv = 0;
+  solids_step_start(e);
   if (e->prm.features & FEAT_TRANSPORT_VELOCITY) transport_velocity(e, &a_tv);
   e->dt = dual_advection_dt(e, a_tv);
   if (check_step(e, e->dt, "advection")) return 2;
@@ -238,6 +240,7 @@ int engine_step_dual(struct engine *e) {
     if (check_step(e, dt, "acoustic")) return 2;
     last = e->dt - tau <= dt * (1.0 + 1e-12);   /* no sub-step of a rounding error at the end */
     double step = last ? e->dt - tau : dt;
+    if (e->solids.n) solids_motion(e, m);   /* the solids' particles are in the lists too */
     if (e->n_acoustic && m[2] + step * (m[0] + m[1] * step) > motion_budget(e) * (1.0 + 1e-9)) {
       e->dt = tau;   /* the next sub-step could leave the cell skin: end the advection step here */
       break;

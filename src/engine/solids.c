@@ -76,6 +76,7 @@ static int init_one(struct engine *e, int k, struct solid_run *r) {
   r->displacement = mem_calloc((size_t)n * dim, sizeof(double), "solid displacements");
   r->stress = mem_calloc((size_t)n * dim * dim, sizeof(double), "solid stresses");
   r->von_mises = mem_calloc((size_t)n, sizeof(double), "solid von Mises stresses");
+  r->x_start = mem_calloc((size_t)n * dim, sizeof(double), "solid step positions");
   return 0;
 }
 
@@ -315,14 +316,14 @@ int solids_snapshot_arrays(struct engine *e, struct hdf5_array *v) {
 }
 
 int solids_arrays(struct engine *e, struct hdf5_array *v) {
-  static const char *const what[SOLID_ARRAYS] = {"x", "v", "acc", "F", "dF", "v_avg", "acc_avg"};
+  static const char *const what[SOLID_ARRAYS] = {"x", "v", "acc", "F", "dF", "v_avg", "acc_avg", "dt_avg", "force"};
   int n = 0;
   for (int k = 0; k < e->solids.n; k++) {
     struct solid_run *r = &e->solids.run[k];
     struct elastic_solid *s = &r->s;
     const long vec = (long)s->n * s->dim, mat = vec * s->dim;
-    double *at[SOLID_ARRAYS] = {s->x, s->v, s->acc, s->F, s->dF, s->v_avg, s->acc_avg};
-    const long size[SOLID_ARRAYS] = {vec, vec, vec, mat, mat, vec, vec};
+    double *at[SOLID_ARRAYS] = {s->x, s->v, s->acc, s->F, s->dF, s->v_avg, s->acc_avg, &s->dt_avg, r->force};
+    const long size[SOLID_ARRAYS] = {vec, vec, vec, mat, mat, vec, vec, 1, 3};
     for (int j = 0; j < SOLID_ARRAYS; j++) {
       snprintf(r->names[j], sizeof r->names[j], "solid%d_%s", k, what[j]);
       v[n++] = (struct hdf5_array){r->names[j], at[j], size[j]};
@@ -342,24 +343,61 @@ int solids_restarted(struct engine *e, const char *path) {
                   a[k].name, j, a[k].at[j]);
         return 1;
       }
-  if (!S->n) return 0;
   double n_fluid, n_wall;
   engine_global_counts(e, &n_fluid, &n_wall);
   S->view.id0 = (int64_t)(n_fluid + n_wall);
+  long count[2] = {0, 0};   /* the solid particles read, those of them with an id out of range */
+  for (long i = 0; i < e->p.n_owned; i++)
+    if (e->p.phase[i] == PHASE_SOLID) {
+      count[0]++;
+      count[1] += e->p.id[i] < S->view.id0 || e->p.id[i] >= S->view.id0 + S->view.n;
+    }
+  MPI_Allreduce(MPI_IN_PLACE, count, 2, MPI_LONG, MPI_SUM, e->comm);
+  if (count[0] != S->view.n || count[1]) {
+    if (e->rank == 0)
+      fprintf(stderr, "mpsph: cannot restart from %s: it holds %ld solid particles (%ld with an id outside %lld to "
+              "%lld), expected the case's %ld\n", path, count[0], count[1], (long long)S->view.id0,
+              (long long)(S->view.id0 + S->view.n - 1), S->view.n);
+    return 1;
+  }
+  if (!S->n) return 0;
   for (int k = 0; k < S->n; k++) elastic_update_normals(&S->run[k].s);
   publish(S, e->c->dimension);
   return 0;
 }
 
-double solids_max_speed(const struct engine *e) {
-  const struct solids *S = &e->solids;
-  double v2 = 0;
-  for (long g = 0; g < S->view.n * e->c->dimension; g += e->c->dimension) {
+/* The largest Euclidean norm of the n vectors of dim values a - b (b NULL: of a). */
+static double largest_norm(const double *a, const double *b, long n, int dim) {
+  double q2 = 0;
+  for (long i = 0; i < n; i++) {
     double q = 0;
-    for (int d = 0; d < e->c->dimension; d++) q += S->v_avg[g + d] * S->v_avg[g + d];
-    if (!(q <= v2)) v2 = q;
+    for (int d = 0; d < dim; d++) {
+      double x = a[i * dim + d] - (b ? b[i * dim + d] : 0.0);
+      q += x * x;
+    }
+    if (!(q <= q2)) q2 = q;   /* NaN propagates */
   }
-  return sqrt(v2);
+  return sqrt(q2);
+}
+
+double solids_max_speed(const struct engine *e) {
+  return largest_norm(e->solids.v_avg, NULL, e->solids.view.n, e->c->dimension);
+}
+
+void solids_step_start(struct engine *e) {
+  for (int k = 0; k < e->solids.n; k++)
+    memcpy(e->solids.run[k].x_start, e->solids.run[k].s.x, (size_t)e->solids.run[k].s.n * e->c->dimension * sizeof(double));
+}
+
+void solids_motion(const struct engine *e, double *m) {
+  const int dim = e->c->dimension;
+  for (int k = 0; k < e->solids.n; k++) {
+    const struct solid_run *r = &e->solids.run[k];
+    double q[3] = {largest_norm(r->s.v_avg, NULL, r->s.n, dim), largest_norm(r->s.acc_avg, NULL, r->s.n, dim),
+                   largest_norm(r->s.x, r->x_start, r->s.n, dim)};
+    for (int j = 0; j < 3; j++)
+      if (!(q[j] <= m[j])) m[j] = q[j];
+  }
 }
 
 void solids_csv_header(const struct engine *e, FILE *f) {
@@ -392,6 +430,7 @@ void solids_free(struct solids *S) {
     free(S->run[k].displacement);
     free(S->run[k].stress);
     free(S->run[k].von_mises);
+    free(S->run[k].x_start);
   }
   free(S->v_avg);
   free(S->acc_avg);

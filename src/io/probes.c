@@ -140,6 +140,7 @@ static double damper_stress(const struct pass_ctx *ctx, long j) {
 static void add_pressure(void *arg, const struct pass_ctx *ctx, long j, double wv) {
   struct probe_sample *q = arg;
   double r[3] = {0, 0, 0};
+  if (ctx->p->phase[j] == PHASE_SOLID) return;   /* its p is the solid's mean stress, not the fluid's */
   for (int d = 0; d < ctx->p->dim; d++) r[d] = (ctx->p->x[d][j] - q->x[d]) / ctx->prm->h;
   probe_sums_add(&q->sums, r, wv, ctx->p->p[j] + damper_stress(ctx, j));
 }
@@ -151,7 +152,8 @@ static void add_colour(void *arg, const struct pass_ctx *ctx, long j, double wv)
 }
 
 /* The pressure [Pa] of probe p at x over the fluid and the wall ghosts (which carry the pressure
- * extrapolated across the wall, so that a sensor on the wall reads the wall pressure); with the
+ * extrapolated across the wall, so that a sensor on the wall reads the wall pressure; not over an
+ * elastic solid's particles, whose p is the solid's mean stress); with the
  * acoustic damper, of p + its stress, the pressure the pair forces act with (doc/theory.md). */
 static double pressure_at(const struct pass_ctx *ctx, const struct probe *p, const double *x) {
   struct probe_sample q = {.x = x};

@@ -587,11 +587,13 @@ int elastic_advance(struct elastic_solid *s, double dt, const double *g) {
   int kappa = (int)steps;
   memcpy(s->x_step, s->x, values * sizeof(double));
   for (int step = 0; step < kappa; step++) elastic_substep(s, dt / kappa, g);
+  const double centres = 0.5 * ((s->dt_avg > 0 ? s->dt_avg : dt) + dt);   /* dt when dt repeats */
   for (size_t i = 0; i < values; i++) {
     double v_avg = (s->x[i] - s->x_step[i]) / dt;
-    s->acc_avg[i] = (v_avg - s->v_avg[i]) / dt;
+    s->acc_avg[i] = (v_avg - s->v_avg[i]) / centres;
     s->v_avg[i] = v_avg;
   }
+  s->dt_avg = dt;
   return kappa;
 }
 
