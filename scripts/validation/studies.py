@@ -579,8 +579,7 @@ STUDIES.append({
     # 002's linear one runs at b/2 too (the quick rung)
     "rungs": [rung(0.00125, 2, label="riemann"), rung(0.000625, 2, label="riemann"),
               rung(0.0025, 1, True, label=GATE_LINEAR, **{"solids.0.correction": "linear"}),
-              rung(0.00125, 2, label=GATE_LINEAR, **{"solids.0.correction": "linear"}),
-              rung(0.000625, 2, label=GATE_LINEAR, **{"solids.0.correction": "linear"})],
+              rung(0.00125, 2, label=GATE_LINEAR, **{"solids.0.correction": "linear"})],
     "plot": "gate",
 })
 
