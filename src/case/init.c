@@ -175,16 +175,6 @@ static int earlier_wall(const struct case_def *c, int w, double thickness, const
   return -1;
 }
 
-/* 1 if x lies inside the box of one of the case's solids (whose particles stand for the wall there). */
-static int inside_solid(const struct case_def *c, const double *x) {
-  for (int k = 0; k < c->n_solids; k++) {
-    int inside = 1;
-    for (int d = 0; d < c->dimension && inside; d++) inside = x[d] > c->solids[k].min[d] && x[d] < c->solids[k].max[d];
-    if (inside) return 1;
-  }
-  return 0;
-}
-
 static int inside_domain(const struct case_def *c, const double *x) {
   for (int d = 0; d < c->dimension; d++)
     if (x[d] < c->domain_min[d] || x[d] > c->domain_max[d]) return 0;
@@ -312,7 +302,7 @@ static int fluid_node(const struct case_def *c, int k, const double *x, char *er
 static int wall_node(const struct case_def *c, const struct init_rows *r, int w, const double *x,
                      char *err, size_t len) {
   if (!ghost_of(c, w, r->thickness, x) || walls_solid_at(c, NULL, x, NULL) < 0) return 0;
-  if (earlier_wall(c, w, r->thickness, x) >= 0 || inside_solid(c, x)) return 0;
+  if (earlier_wall(c, w, r->thickness, x) >= 0) return 0;
   if (inside_domain(c, x)) return 1;
   snprintf(err, len, "%s: walls.%d: its %d ghost layers (%g m thick) reach (%g, %g%s) outside "
            "the domain: the domain must extend at least %g m beyond the wall", c->source_file, w,
