@@ -112,7 +112,8 @@ int solids_init(struct engine *e) {
   return 0;
 }
 
-/* Solid particle a of solid run r as particle slot i of p (id id). */
+/* Solid particle a of solid run r into its copy in slot i of p: position, velocity v~, density
+ * rho0/J and pressure -tr(sigma)/dim. */
 static void set_copy(const struct solid_run *r, int a, struct parts *p, long i) {
   const struct elastic_solid *s = &r->s;
   const int dim = s->dim;
