@@ -405,10 +405,12 @@ static void check_penalty(struct engine *e, struct case_def *c) {
   const long n = e->p.n_owned;
   double *without = calloc(2 * (size_t)n + 1, sizeof(double)), worst_other = 0, got[2] = {0, 0}, want[2] = {0, 0};
   c->light_penalty = 0;
+  engine_assemble(e);   /* the pipeline's parameters from the case */
   run_pass(e, "Riemann momentum");
   for (long i = 0; i < n; i++)
     for (int d = 0; d < 2; d++) without[2 * i + d] = e->w.dv[d][i];
   c->light_penalty = 0.01;
+  engine_assemble(e);
   run_pass(e, "Riemann momentum");
   for (long i = 0; i < n; i++) {
     if (e->p.phase[i] < 0) continue;

@@ -121,6 +121,8 @@ struct physics_params {
   double damper_coef[CASE_MAX_PHASES + 1];  /* alpha2 c0 h of phase k at [k + 1]; 0 for gases, walls [m^2/s] */
   double lattice_w_sum;            /* scheme riemann: sum of W over the undisturbed lattice, self
                                       included [1/m^dim] */
+  double light_penalty[CASE_MAX_PHASES];   /* scheme riemann: physics.light_penalty for a light
+                                              phase, 0 for the others [-] */
   unsigned body_walls;             /* bit w: wall w is a rigid body (FEAT_BODIES) */
   /* set by the time stepper */
   struct frame frames[CASE_MAX_WALLS];   /* the moving walls' frames at the stage's time */

@@ -57,6 +57,8 @@ void engine_assemble_dual(struct engine *e) {
                                            .halo_fields = dual_table[k].halo_fields};
   }
   e->prm.lattice_w_sum = lattice_kernel_sum(&e->prm.kern, e->c->dx);
+  for (int ph = 0; ph < e->c->n_phases; ph++)
+    e->prm.light_penalty[ph] = riemann_light_phase(e->c, ph) ? e->c->light_penalty : 0.0;
 }
 
 /* Run operation id of the table if the pipeline has it. */

@@ -186,14 +186,20 @@ struct snapshot_info engine_snapshot_info(const struct engine *e, double time, l
                                 .case_yaml = e->case_yaml, .code_version = MPSPH_VERSION};
 }
 
-/* One snapshot file named `name` in the output folder at the given time and step. */
-static int write_named(struct engine *e, const char *name, double time, long step) {
-  char *path = outdir_path(e->outdir, "%s", name), err[512];
+/* The snapshot at path of the state at the given time and step, with the solids' arrays
+ * (hdf5_write_snapshot's status and message). */
+static int snapshot_to(struct engine *e, const char *path, double time, long step, char *err, size_t len) {
   struct snapshot_info info = engine_snapshot_info(e, time, step);
   struct hdf5_array solid_arrays[CASE_MAX_SOLIDS * SOLID_SNAPSHOT_ARRAYS];
   info.n_arrays = solids_snapshot_arrays(e, solid_arrays);
   info.arrays = solid_arrays;
-  int status = hdf5_write_snapshot(path, &info, &e->p, e->comm, err, sizeof(err));
+  return hdf5_write_snapshot(path, &info, &e->p, e->comm, err, len);
+}
+
+/* One snapshot file named `name` in the output folder at the given time and step. */
+static int write_named(struct engine *e, const char *name, double time, long step) {
+  char *path = outdir_path(e->outdir, "%s", name), err[512];
+  int status = snapshot_to(e, path, time, step, err, sizeof(err));
   if (status && e->rank == 0) fprintf(stderr, "mpsph: %s\n", err);
   if (!status && e->rank == 0) printf("wrote %s (t = %.9g s, step %ld)\n", path, time, step);
   free(path);
@@ -210,12 +216,8 @@ int engine_write_failure(struct engine *e) {
 
 static int write_snapshot(struct engine *e) {
   char *path = outdir_path(e->outdir, OUTDIR_SNAPSHOT_NAME, e->n_snapshots), err[512];
-  struct snapshot_info info = engine_snapshot_info(e, e->time, e->step);
-  struct hdf5_array solid_arrays[CASE_MAX_SOLIDS * SOLID_SNAPSHOT_ARRAYS];
-  info.n_arrays = solids_snapshot_arrays(e, solid_arrays);
-  info.arrays = solid_arrays;
   double t0 = MPI_Wtime();
-  int status = hdf5_write_snapshot(path, &info, &e->p, e->comm, err, sizeof(err));
+  int status = snapshot_to(e, path, e->time, e->step, err, sizeof(err));
   free(path);
   long n_total, n = e->p.n_owned;
   MPI_Allreduce(&n, &n_total, 1, MPI_LONG, MPI_SUM, e->comm);

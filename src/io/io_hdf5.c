@@ -444,16 +444,21 @@ static void series_fields(const struct checkpoint_extra *x, struct field *f) {
   f[1] = long_field("/run/snapshot_particles", H5T_NATIVE_LONG, x->snapshot_counts);
 }
 
+/* The dataset /<group>/<name> of replicated array a. */
+static struct field array_field(const char *group, const struct hdf5_array *a) {
+  char name[MAX_FIELD_PATH];
+  snprintf(name, sizeof name, "/%s/%s", group, a->name);
+  return real_field(name, a->at);
+}
+
 /* The replicated arrays a[0, n) as datasets /<group>/<name> written by rank 0; 0 or 3. */
 static int write_arrays(hid_t file, const char *group, const struct hdf5_array *a, int n, MPI_Comm comm, char *err,
                         size_t len) {
   int rank, st = 0;
   MPI_Comm_rank(comm, &rank);
   for (int k = 0; k < n && !st; k++) {
-    char name[MAX_FIELD_PATH];
     struct layout L;
-    snprintf(name, sizeof name, "/%s/%s", group, a[k].name);
-    struct field f = real_field(name, a[k].at);
+    struct field f = array_field(group, &a[k]);
     write_layout(rank == 0 ? a[k].n : 0, sizeof(double), comm, &L);
     st = write_fields(file, &f, 1, &L, comm, err, len);
   }
@@ -707,9 +712,7 @@ static int read_run(hid_t file, struct checkpoint_extra *x, hid_t dxpl, MPI_Comm
   st = read_field(file, &f[0], n, 1, dxpl, NULL, comm, err, len);
   if (!st) st = read_field(file, &f[1], n, 1, dxpl, NULL, comm, err, len);
   for (int k = 0; k < x->n_arrays && !st; k++) {
-    char name[MAX_FIELD_PATH];
-    snprintf(name, sizeof name, "/run/%s", x->arrays[k].name);
-    f[0] = real_field(name, x->arrays[k].at);
+    f[0] = array_field("run", &x->arrays[k]);
     st = read_field(file, &f[0], x->arrays[k].n, 1, dxpl, NULL, comm, err, len);
   }
   return st;

@@ -66,24 +66,26 @@ static inline double solid_dummy(const struct pass_ctx *ctx, const struct rcentr
   return ci->p + ci->rho * fmax(0.0, head);
 }
 
-/* The unit normal n (into the fluid) of boundary particle j: a solid particle's current normal, a
- * wall ghost's mirror direction; 0 when it has none (a solid particle deep inside). */
-static inline void boundary_normal(const struct pass_ctx *ctx, long j, int solid, double *n, const int dim) {
+/* The unit normal n (into the fluid) of boundary particle j: a solid particle's (g >= 0, its index
+ * in the solid view) current normal, a wall ghost's mirror direction; 0 when it has none (a solid
+ * particle deep inside). */
+static inline void boundary_normal(const struct pass_ctx *ctx, long j, long g, double *n, const int dim) {
   const struct parts *p = ctx->p;
   double n2 = 0;
   for (int d = 0; d < dim; d++) {
-    n[d] = solid ? ctx->solids->normal[(p->id[j] - ctx->solids->id0) * dim + d] : p->mirror[d][j];
+    n[d] = g >= 0 ? ctx->solids->normal[g * dim + d] : p->mirror[d][j];
     n2 += n[d] * n[d];
   }
   for (int d = 0; d < dim; d++) n[d] = n2 > 0 ? n[d] / sqrt(n2) : 0.0;
 }
 
 /* The penalty factor V_a Gamma_ia W'(r)/r (times n_a and -2/rho_i it is the acceleration) of boundary
- * particle j for light particle i at dx = r_i - r_j, r = |dx|, fv = V_a W'(r)/r; n_a into n. */
-static inline double penalty_of(const struct pass_ctx *ctx, const struct rcentre *ci, long j, int solid,
+ * particle j (g as for boundary_normal) for light particle i at dx = r_i - r_j, r = |dx|,
+ * fv = V_a W'(r)/r; n_a into n. */
+static inline double penalty_of(const struct pass_ctx *ctx, const struct rcentre *ci, long j, long g,
                                 const double *dx, double r, double fv, double *n, const int dim) {
   double rn = 0;
-  boundary_normal(ctx, j, solid, n, dim);
+  boundary_normal(ctx, j, g, n, dim);
   for (int d = 0; d < dim; d++) rn += dx[d] * n[d];
   double beta = 2.0 * rn / ctx->prm->h;
   if (beta > 1.0) return 0.0;
@@ -142,7 +144,7 @@ static inline __attribute__((always_inline)) void riemann_sums(const struct pass
         }
         if (solid) body_load_append(ctx->solid_loads, p, ci->i, (int)g, LOAD_PAIRS, dv_pair);
         if (wall && ci->penalty > 0) {
-          double n[3], pen = penalty_of(ctx, ci, j, solid, dx, r, fv, n, dim);
+          double n[3], pen = penalty_of(ctx, ci, j, g, dx, r, fv, n, dim);
           for (int d = 0; d < dim; d++) gp[d] += pen * n[d];   /* -(2/rho_i) pen n: as a pressure term */
         }
       } else {
@@ -174,7 +176,7 @@ static void centre_of(const struct pass_ctx *ctx, long i, struct rcentre *ci) {
   ci->c = f->c0;
   ci->z = ci->rho * ci->c;
   ci->eta = f->viscosity;
-  ci->penalty = riemann_light_phase(ctx->c, ci->phase) ? ctx->c->light_penalty : 0.0;
+  ci->penalty = ctx->prm->light_penalty[ci->phase];
 }
 
 /* The sums of i in the specialisation for the dimension. */
