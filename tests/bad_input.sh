@@ -109,6 +109,17 @@ refuses solid-overlap "solids\.0: a fluid particle lies inside the solid's box" 
   scripts/mpirun -n 2 build/mpsph run "$gate" -o "$tmp/solid-overlap" --set 'fluids.0.box.min=[0.39,0]'
 refuses solid-spacing 'solids\.0\.max: got a box 30\.6667 particle spacings wide along axis 1, expected a whole number' -- \
   build/mpsph run cases/elastic-plate-walhorn/case.yaml -o "$tmp/solid-spacing" --set resolution.dx=0.003
+# Multi-resolution (the two-phase tank): scheme riemann only, a light phase only, no surface tension.
+tank2=cases/hydrostatic-2phase/case.yaml
+refuses mr-ratio "phases\.1\.dx_ratio: got '3', expected 1 or 2" -- \
+  build/mpsph run "$tank2" -o "$tmp/mr-ratio" --set phases.1.dx_ratio=3
+refuses mr-scheme 'phases\.1\.dx_ratio: multi-resolution is not available with scheme delta-plus' -- \
+  build/mpsph run "$tank2" -o "$tmp/mr-scheme" --set phases.1.dx_ratio=2
+refuses mr-heavy 'phases\.0\.dx_ratio: only a light phase .* may be coarser' -- \
+  build/mpsph run "$tank2" -o "$tmp/mr-heavy" --set scheme=riemann --set phases.0.dx_ratio=2
+refuses mr-tension 'physics\.surface_tension: not available with multi-resolution' -- \
+  build/mpsph run "$tank2" -o "$tmp/mr-tension" --set scheme=riemann --set phases.1.dx_ratio=2 \
+  --set physics.surface_tension=0.07
 # Geometry.
 sed 's/max: \[1, 1\]}}$/max: [1, 1]}}\n  - {phase: water, box: {min: [0.5, 0.5], max: [0.9, 0.9]}}/' \
   "$case" > "$tmp/overlap.yaml"

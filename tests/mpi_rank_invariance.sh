@@ -2,7 +2,8 @@
 # test-cores: 3
 # The single-phase dam break (2D, 300 steps), a coarse 3D hydrostatic box (40 steps), the
 # two-phase dam break with every delta-plus term (100 steps), a tank shaken by a prescribed
-# wall motion (150 steps), and the two-phase dam break with scheme riemann (60 steps), under
+# wall motion (150 steps), and the two-phase dam break with scheme riemann (60 steps; also with
+# the air at twice the spacing, 1 and 3 ranks), under
 # scheme same-phase-continuity (100 steps) and with scheme generalized-dissipation (60 steps) give
 # bitwise-identical particle data (sorted by id) on
 # 1, 2 and 3 ranks, also with forced re-partitions; on the re-partitioned runs of every scheme the
@@ -87,6 +88,13 @@ scripts/mpirun -n 3 build/mpsph run "${riemann[@]}" -o "$out/ri3" --set parallel
 "$PYTHON" tests/compare_snapshots.py "$out/ri1" "$out/ri2"
 "$PYTHON" tests/compare_snapshots.py "$out/ri1" "$out/ri3"
 "$PYTHON" tests/check_mass.py "$out/ri3"
+# The same with the air at twice the spacing (multi-resolution: two kernels, lists by phase, cells
+# and wall layers at the air's support), 1 rank against 3 with re-partitions.
+riemann_mr=("${riemann[@]}" --set phases.1.dx_ratio=2 --set 'domain.min=[-0.3,-0.3]' --set 'domain.max=[3.516,2.1]')
+scripts/mpirun -n 1 build/mpsph run "${riemann_mr[@]}" -o "$out/mr1"
+scripts/mpirun -n 3 build/mpsph run "${riemann_mr[@]}" -o "$out/mr3" --set parallel.repartition_every=25
+"$PYTHON" tests/compare_snapshots.py "$out/mr1" "$out/mr3"
+"$PYTHON" tests/check_mass.py "$out/mr3"
 # Scheme same-phase-continuity (its own pair passes and the two-stage predictor-corrector): the
 # two-phase dam break, 100 steps, 1, 2 and 3 ranks with re-partitions.
 spc=(cases/dambreak-2phase/case.yaml --set resolution.dx=0.04 --set time.max_steps=100

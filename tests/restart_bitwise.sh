@@ -50,7 +50,7 @@ print(f"snapshots {n_ref} + 1, stats.csv rows in order: ok")
 PY
 
 # Scheme riemann (dual time stepping): 60 advection steps of the two-phase tank on 1 rank, and
-# 30 on 2 ranks continued on 3, end in the same checkpoint bit for bit.
+# 30 on 2 ranks continued on 3, end in the same checkpoint bit for bit; with the air at 2 dx too.
 riemann=(build/mpsph run cases/hydrostatic-2phase/case.yaml --set scheme=riemann --set kernel=wendland-c2
          --set resolution.h_over_dx=1.3 --set resolution.dx=0.05 --set phases.0.c0=62.6 --set phases.0.gamma=1
          --set phases.1.c0=62.6 --set phases.1.gamma=1 --set physics.u_max=6.26 --set time.cfl=0.6
@@ -59,6 +59,12 @@ scripts/mpirun -n 1 "${riemann[@]}" -o "$out/ri_ref" --set time.max_steps=60 > "
 scripts/mpirun -n 2 "${riemann[@]}" -o "$out/ri_half" --set time.max_steps=30 > "$out/ri_half.log" 2>&1
 scripts/mpirun -n 3 "${riemann[@]}" -o "$out/ri_half" --set time.max_steps=60 --restart > "$out/ri_half2.log" 2>&1
 "$PYTHON" tests/compare_snapshots.py "$out/ri_ref/checkpoint.h5" "$out/ri_half/checkpoint.h5"
+# The same with the air at twice the spacing (multi-resolution), 1 rank against 2 continued on 1.
+mr=(--set phases.1.dx_ratio=2 --set 'domain.min=[-0.4,-0.4]' --set 'domain.max=[1.4,2.4]')
+scripts/mpirun -n 1 "${riemann[@]}" "${mr[@]}" -o "$out/mr_ref" --set time.max_steps=60 > "$out/mr_ref.log" 2>&1
+scripts/mpirun -n 2 "${riemann[@]}" "${mr[@]}" -o "$out/mr_half" --set time.max_steps=30 > "$out/mr_half.log" 2>&1
+scripts/mpirun -n 1 "${riemann[@]}" "${mr[@]}" -o "$out/mr_half" --set time.max_steps=60 --restart > "$out/mr_half2.log" 2>&1
+"$PYTHON" tests/compare_snapshots.py "$out/mr_ref/checkpoint.h5" "$out/mr_half/checkpoint.h5"
 
 # A finished run extended with a later time.end.
 run 2 "$out/ext" --set time.end=0.004

@@ -2,7 +2,8 @@
  * brute-force neighbour set on random particles, in 2D and 3D, the sort is by cell, each cell's
  * fluid first, then by id, the fluid-only ranges hold exactly the fluid within their radius, and
  * the neighbour lists (bit masks over the stencil) read back every slot within their radius, in
- * the stencil's order (global cell order, then slot order). */
+ * the stencil's order (global cell order, then slot order), also with radii by phase
+ * (multi-resolution: a pair within the larger of its two particles' radii). */
 #include <stdlib.h>
 #include "check.h"
 #include "physics/passes.h"
@@ -75,11 +76,19 @@ static long cell_count_pairs(const struct space *s, const struct parts *p, long 
   return count;
 }
 
+/* The squared build radius of the pair of listed slot i and slot j: radius2, or with phase_radius2
+ * i's phase's, or j's when j is fluid and its phase's is larger. */
+static double pair_radius2(const struct parts *p, long i, long j, double radius2, const double *phase_radius2) {
+  if (!phase_radius2) return radius2;
+  double ri = phase_radius2[p->phase[i]], rj = p->phase[j] >= 0 ? phase_radius2[p->phase[j]] : 0.0;
+  return ri > rj ? ri : rj;
+}
+
 /* Owned slot i (in owned cell k, its f-th fluid particle) against its neighbour list: the same
- * slots, in the same order, as a scan of the stencil for the other slots within radius2.
- * Returns 1 on a mismatch. */
+ * slots, in the same order, as a scan of the stencil for the other slots within the pair's radius
+ * (pair_radius2). Returns 1 on a mismatch. */
 static int list_differs(struct nlist *l, const struct space *s, const struct parts *p, long k, long f,
-                        long i, double radius2) {
+                        long i, double radius2, const double *phase_radius2) {
   struct neighbour_ranges r;
   neighbour_ranges(s, s->owned_cells[k], &r);
   nlist_enter_cell(l, &r);
@@ -90,21 +99,26 @@ static int list_differs(struct nlist *l, const struct space *s, const struct par
     for (long j = r.start[q]; j < r.start[q] + r.count[q]; j++) {
       double r2 = 0;
       for (int d = 0; d < p->dim; d++) r2 += (p->x[d][i] - p->x[d][j]) * (p->x[d][i] - p->x[d][j]);
-      if (r2 < radius2 && j != i) differs |= !neighbours_next(&nb, &listed) || listed != j;
+      if (r2 < pair_radius2(p, i, j, radius2, phase_radius2) && j != i)
+        differs |= !neighbours_next(&nb, &listed) || listed != j;
     }
   return differs || neighbours_next(&nb, &listed);
 }
 
-/* Every owned fluid particle's neighbour list, built with radius `radius`, against the stencil
- * scan. */
-static long list_mismatches(const struct space *s, const struct parts *p, double radius) {
+/* Every owned fluid particle's neighbour list, built with radius `radius` (and phase_radius, the
+ * radii of n_phases phases, or NULL), against the stencil scan. */
+static long list_mismatches(const struct space *s, const struct parts *p, double radius, const double *phase_radius,
+                            int n_phases) {
   struct nlist l = {0};
   long bad = 0;
-  nlist_build(&l, s, p, radius);
+  double phase_radius2[NLIST_MAX_PHASES];
+  for (int ph = 0; ph < n_phases; ph++) phase_radius2[ph] = phase_radius[ph] * phase_radius[ph];
+  nlist_build(&l, s, p, radius, phase_radius, n_phases);
   for (long k = 0; k < s->n_owned_cells; k++) {
     long c = s->owned_cells[k], f = 0;
     for (long i = space_cell_first(s, c); i < space_cell_first(s, c) + space_cell_size(s, c); i++)
-      if (p->phase[i] != PHASE_WALL) bad += list_differs(&l, s, p, k, f++, i, radius * radius);
+      if (p->phase[i] != PHASE_WALL)
+        bad += list_differs(&l, s, p, k, f++, i, radius * radius, phase_radius ? phase_radius2 : NULL);
   }
   nlist_free(&l);
   return bad;
@@ -140,8 +154,13 @@ static void check_dim(int dim, long n, double support, long top_per_rank) {
     mismatches += brute_count(&p, i, support * support) != cell_count_pairs(&s, &p, i, support * support);
   CHECK(mismatches == 0, "%dD, blocks of %ld: %ld particles with a wrong neighbour count", dim,
         s.block, mismatches);
-  mismatches = list_mismatches(&s, &p, support);
+  mismatches = list_mismatches(&s, &p, support, NULL, 0);
   CHECK(mismatches == 0, "%dD, blocks of %ld: %ld particles with a wrong neighbour list", dim,
+        s.block, mismatches);
+  for (long i = 0; i < n; i += 3) p.phase[i] = p.phase[i] == PHASE_WALL ? PHASE_WALL : 1;
+  const double phase_radius[2] = {0.6 * support, support};   /* radius (0.3 support) unused */
+  mismatches = list_mismatches(&s, &p, 0.3 * support, phase_radius, 2);
+  CHECK(mismatches == 0, "%dD, blocks of %ld: %ld particles with a wrong neighbour list, radii by phase", dim,
         s.block, mismatches);
   free(owner);
   space_free(&s);

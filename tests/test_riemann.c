@@ -34,7 +34,18 @@
  *  9. the penalty force (paper 002 Eqs. 21-23, physics.light_penalty): a gas particle of a closed
  *     tank at rest and uniform pressure pushed to 0.1 dx from the lid: its du/dt with the penalty
  *     less that without is the sum over the lid's ghosts -(2/rho_i) V_a Gamma n_a W'(r) to
- *     round-off (brute force here), points away from the lid, and no other particle's changes.
+ *     round-off (brute force here), points away from the lid, and no other particle's changes;
+ *     with the gas at twice the spacing (test 10) the same with the pair's kernel at 2h and the
+ *     prefactor h_S/h^chi = 1/2 (the gas particle under the lid likewise pushed to 0.1 dx);
+ * 10. multi-resolution (paper 002 section 3.5): test 2's phases with the light one at twice the
+ *     spacing (dx_ratio 2): the same checks as tests 2-4, with each pair's kernel the one of the
+ *     larger smoothing length and each neighbour counted as V0_j/V0_i lattice sites in the
+ *     re-initialisation (brute force here): the re-initialisation as Eqs. 10-11 state it, rho0 back
+ *     for the particles whose support holds their own phase only; the Riemann terms equal to the
+ *     plain terms in equal states; sum_i m_i du_i/dt = 0 (h^chi is the same both ways). The largest
+ *     departure from rho0 of a light particle beside the heavy phase is printed (the quadrature of
+ *     the two lattices); and test 9's closed tank with the gas at 2 dx: the re-initialisation with
+ *     the wall ghosts counted as (dx / 2dx)^2 of a gas particle's lattice site, and the penalty.
  * Usage: test_riemann */
 #include <math.h>
 #include <stdio.h>
@@ -118,6 +129,34 @@ static const char *penalty_case =
     "  - {box: {min: [0, 0], max: [1, 1]}, slip: no}\n"
     CASE_TAIL;
 
+/* Test 10: test 2's phases, the light one at twice the spacing (0.52 m = 13 of its dx). */
+static const char *multires_case =
+    "name: riemann-multires-test\n" UNIT_BOX_HEAD
+    "phases:\n"
+    "  - {name: water, rho0: 1000, c0: 20, gamma: 1, incompressible: true}\n"
+    "  - {name: light, rho0: 1, c0: 20, gamma: 1, density_band: [0.5, 2000], dx_ratio: 2}\n"
+    "fluids:\n"
+    "  - {phase: water, box: {min: [0, 0], max: [1, 0.48]}}\n"
+    "  - {phase: light, box: {min: [0, 0.48], max: [1, 1]}}\n"
+    CASE_TAIL;
+
+/* Tests 9 and 10: test 9's tank with the gas at twice the spacing (0.52 m = 13 of its dx), room for
+ * 6 ghost layers. */
+static const char *multires_penalty_case =
+    "name: riemann-multires-penalty-test\n"
+    "dimension: 2\nscheme: riemann\nkernel: wendland-c2\n"
+    "resolution: {dx: 0.02, h_over_dx: 1.3}\ntime: {end: 1.0, cfl: 0.6}\n"
+    "domain: {min: [-0.15, -0.15], max: [1.15, 1.15]}\n"
+    "phases:\n"
+    "  - {name: water, rho0: 1000, c0: 20, gamma: 1, incompressible: true, p_background: 5000}\n"
+    "  - {name: gas, rho0: 1, c0: 20, gamma: 1, p_background: 5000, density_band: [0.5, 2000], dx_ratio: 2}\n"
+    "fluids:\n"
+    "  - {phase: water, box: {min: [0, 0], max: [1, 0.48]}}\n"
+    "  - {phase: gas, box: {min: [0, 0.48], max: [1, 1]}}\n"
+    "walls:\n"
+    "  - {box: {min: [0, 0], max: [1, 1]}, slip: no}\n"
+    CASE_TAIL;
+
 /* Test 7: two liquids whose lattices are offset by (dx/2, dx/2) (anchors at their boxes' corners). */
 static const char *liquids_case =
     "name: riemann-liquids-test\n" UNIT_BOX_HEAD
@@ -148,12 +187,13 @@ static void set_fields(struct engine *e, int k) {
   for (long i = 0; i < p->n_owned; i++) {
     if (p->phase[i] < 0) continue;   /* a wall ghost or a solid's particle */
     const struct phase *f = &e->c->phases[p->phase[i]];
-    p->m[i] = f->rho0 * e->prm.vol0;
+    const double vol0 = e->prm.phase_vol0[p->phase[i]];
+    p->m[i] = f->rho0 * vol0;
     p->rho[i] = k == 2 ? f->rho0 * (1 + 0.01 * engine_test_noise(p->id[i], 5)) : f->rho0;
     p->p[i] = eos_pressure(f, p->rho[i]);
     for (int d = 0; d < 2; d++) p->v[d][i] = k == 1 ? 0.3 * p->x[d][i] : k == 2 ? engine_test_noise(p->id[i], 10 + d) : 0;
     if (k == 1) {
-      p->m[i] = 1000 * e->prm.vol0;
+      p->m[i] = 1000 * vol0;
       p->rho[i] = 1000;
       p->p[i] = 500 + 700 * p->x[0][i] - 300 * p->x[1][i];
     }
@@ -176,9 +216,14 @@ static void set_and_rebuild(struct engine *e, int k) {
   engine_test_rebuild(e);
 }
 
-/* 1 if owned particle i's kernel support lies inside the box [0,1]^2. */
+/* The kernel of the pair of owned particle i and slot j (h^chi). */
+static const struct kernel *pair_kernel(const struct engine *e, long i, long j) {
+  return riemann_pair_kernel(&e->prm, e->p.phase[i], e->p.phase[j]);
+}
+
+/* 1 if owned particle i's kernel support (the largest of its pairs') lies inside the box [0,1]^2. */
 static int support_inside(const struct engine *e, long i) {
-  double x = e->p.x[0][i], y = e->p.x[1][i], s = e->prm.kern.support;
+  double x = e->p.x[0][i], y = e->p.x[1][i], s = e->prm.chunk_kern[e->p.phase[i]].support;
   return fmin(fmin(x, 1 - x), fmin(y, 1 - y)) > s;
 }
 
@@ -188,13 +233,13 @@ static double expected_reinit(const struct engine *e, long i, double rho_star) {
   const struct parts *p = &e->p;
   const int ph = p->phase[i], light = riemann_light_phase(e->c, ph);
   const double rho0 = e->c->phases[ph].rho0;
-  double sum = kernel_w(&e->prm.kern, 0.0);
+  double sum = kernel_w(&e->prm.phase_kern[ph], 0.0);
   for (long j = 0; j < p->n_owned + p->n_halo; j++) {
     if (j == i || (!light && p->phase[j] != PHASE_WALL && p->phase[j] != ph)) continue;
-    double dx[3], r2 = pair_separation(p, 2, i, j, dx);
-    if (r2 < e->prm.kern.support2) sum += kernel_w(&e->prm.kern, r2);
+    double dx[3], r2 = pair_separation(p, 2, i, j, dx), sites = p->phase[j] >= 0 ? e->prm.phase_vol0[p->phase[j]] : e->prm.vol0;
+    if (r2 < pair_kernel(e, i, j)->support2) sum += sites / e->prm.phase_vol0[ph] * kernel_w(pair_kernel(e, i, j), r2);
   }
-  double rho_sum = rho0 * sum / e->prm.lattice_w_sum;
+  double rho_sum = rho0 * sum / e->prm.lattice_w_sum[ph];
   return light ? rho_sum : rho_sum + fmax(0.0, rho_star - rho_sum) * rho0 / rho_star;
 }
 
@@ -204,7 +249,7 @@ static int support_of_own_phase(const struct engine *e, long i) {
   for (long j = 0; j < p->n_owned + p->n_halo; j++) {
     double dx[3];
     if (p->phase[j] != PHASE_WALL && p->phase[j] != p->phase[i] &&
-        pair_separation(p, 2, i, j, dx) < e->prm.kern.support2)
+        pair_separation(p, 2, i, j, dx) < pair_kernel(e, i, j)->support2)
       return 0;
   }
   return 1;
@@ -212,33 +257,39 @@ static int support_of_own_phase(const struct engine *e, long i) {
 
 /* Re-initialise from the continuity density 0.99 rho0; into err[0] the largest relative distance
  * of any particle from expected_reinit, into err[1] (heavy) and err[2] (light) that from rho0 of
- * the particles whose support lies inside [0,1]^2 and, for a heavy one, holds no other phase (a
- * light one counts every phase), over all ranks. */
+ * the particles whose support lies inside [0,1]^2 and, for a heavy one (and any at
+ * multi-resolution), holds no other phase (a light one counts every phase), into err[3] that of
+ * the other light particles whose support lies inside, over all ranks. */
 static void reinit_errors(struct engine *e, double *err) {
   set_and_rebuild(e, 0);
   for (long i = 0; i < e->p.n_owned; i++) e->p.rho[i] *= 0.99;
   double rho_star[e->p.n_owned > 0 ? e->p.n_owned : 1];
   for (long i = 0; i < e->p.n_owned; i++) rho_star[i] = e->p.rho[i];
   run_pass(e, "density re-initialisation");
-  err[0] = err[1] = err[2] = 0;
+  err[0] = err[1] = err[2] = err[3] = 0;
   for (long i = 0; i < e->p.n_owned; i++) {
     int ph = e->p.phase[i];
     if (ph == PHASE_WALL) continue;
     double rho0 = e->c->phases[ph].rho0;
     err[0] = fmax(err[0], fabs(e->p.rho[i] - expected_reinit(e, i, rho_star[i])) / rho0);
-    int light = riemann_light_phase(e->c, ph);
-    if (support_inside(e, i) && (light || support_of_own_phase(e, i)))
+    int light = riemann_light_phase(e->c, ph), own = support_of_own_phase(e, i);
+    if (support_inside(e, i) && ((light && !e->prm.multires) || own))
       err[1 + light] = fmax(err[1 + light], fabs(e->p.rho[i] - rho0) / rho0);
+    else if (support_inside(e, i) && light)
+      err[3] = fmax(err[3], fabs(e->p.rho[i] - rho0) / rho0);
   }
-  MPI_Allreduce(MPI_IN_PLACE, err, 3, MPI_DOUBLE, MPI_MAX, e->comm);
+  MPI_Allreduce(MPI_IN_PLACE, err, 4, MPI_DOUBLE, MPI_MAX, e->comm);
 }
 
 static void check_reinit(struct engine *e) {
-  double err[3];
+  double err[4];
   reinit_errors(e, err);
   if (e->rank == 0)
     printf("re-initialised density from 0.99 rho0: off Eqs. 10-11 by %.3g; off rho0 with complete supports "
-           "(heavy: of its own phase): heavy %.3g, light %.3g\n", err[0], err[1], err[2]);
+           "(heavy%s: of its own phase): heavy %.3g, light %.3g\n", err[0], e->prm.multires ? " and light" : "",
+           err[1], err[2]);
+  if (e->rank == 0 && e->prm.multires)
+    printf("multi-resolution: light particles beside the heavy phase off rho0 by up to %.3g\n", err[3]);
   CHECK(err[0] <= 1e-13 && err[1] <= 1e-13 && err[2] <= 1e-13, "re-initialisation on the lattice: %g %g %g",
         err[0], err[1], err[2]);
 }
@@ -248,7 +299,7 @@ static void check_reinit(struct engine *e) {
  * holds their own phase only come back to rho0 from 0.99 rho0. Counting the other liquid's
  * crowded rows as well reads as a compression of 28 % at the interface. */
 static void check_liquid_reinit(struct engine *e) {
-  double err[3];
+  double err[4];
   reinit_errors(e, err);
   if (e->rank == 0)
     printf("two liquids, crowded interface: re-initialised density off Eqs. 10-11 by %.3g, off rho0 %.3g\n",
@@ -265,8 +316,8 @@ static void plain_terms(const struct engine *e, long i, double *acc, double *drh
   acc[0] = acc[1] = *drho = scale[0] = scale[1] = 0;
   for (long j = 0; j < p->n_owned + p->n_halo; j++) {
     double dx[3], r2 = pair_separation(p, 2, i, j, dx);
-    if (j == i || r2 >= e->prm.kern.support2 || p->phase[j] == PHASE_WALL) continue;
-    double fv = kernel_f(&e->prm.kern, r2) * p->m[j] / p->rho[j], vdx = 0;
+    if (j == i || r2 >= pair_kernel(e, i, j)->support2 || p->phase[j] == PHASE_WALL) continue;
+    double fv = kernel_f(pair_kernel(e, i, j), r2) * p->m[j] / p->rho[j], vdx = 0;
     for (int d = 0; d < 2; d++) {
       acc[d] -= (p->p[i] + p->p[j]) * fv * dx[d] / p->rho[i];
       scale[0] += fabs((p->p[i] + p->p[j]) * fv * dx[d] / p->rho[i]);
@@ -381,29 +432,32 @@ static void penalty_expected(const struct engine *e, long i, double k, double *a
   acc[0] = acc[1] = 0;
   for (long j = 0; j < p->n_owned + p->n_halo; j++) {
     double dx[3], r2 = pair_separation(p, 2, i, j, dx);
-    if (p->phase[j] != PHASE_WALL || r2 >= e->prm.kern.support2) continue;
+    const struct kernel *kp = pair_kernel(e, i, j);   /* i's: h^chi of a light particle and a wall */
+    if (p->phase[j] != PHASE_WALL || r2 >= kp->support2) continue;
     double m = hypot(p->mirror[0][j], p->mirror[1][j]), n[2] = {p->mirror[0][j] / m, p->mirror[1][j] / m};
     double r = sqrt(r2), rn = dx[0] * n[0] + dx[1] * n[1], beta = 2 * rn / e->prm.h;
     if (beta > 1) continue;
-    double gamma = k * fabs(p->p[i] * rn / r) * (1 - beta) * (1 - beta), dw = kernel_f(&e->prm.kern, r2) * r;
+    double gamma = k * (e->prm.h / kp->h) * fabs(p->p[i] * rn / r) * (1 - beta) * (1 - beta), dw = kernel_f(kp, r2) * r;
     for (int d = 0; d < 2; d++) acc[d] -= 2.0 / p->rho[i] * e->prm.vol0 * gamma * n[d] * dw;
   }
 }
 
 static void check_penalty(struct engine *e, struct case_def *c) {
   set_fields(e, 0);
-  const double dx = e->c->dx;
-  long target = -1;   /* the gas particle at (0.5 - dx/2, 1 - dx/2), in the row under the lid */
+  const double dx = case_phase_dx(e->c, 1);
+  const double x0 = (floor(0.5 / dx - 0.5) + 0.5) * dx;   /* the gas's lattice column nearest 0.5 from below */
+  long target = -1;   /* the gas particle at (x0, 1 - dx/2), in the row under the lid, at the gas's dx */
   for (long i = 0; i < e->p.n_owned; i++)
-    if (e->p.phase[i] == 1 && fabs(e->p.x[0][i] - (0.5 - dx / 2)) < 1e-9 && fabs(e->p.x[1][i] - (1 - dx / 2)) < 1e-9)
+    if (e->p.phase[i] == 1 && fabs(e->p.x[0][i] - x0) < 1e-9 && fabs(e->p.x[1][i] - (1 - dx / 2)) < 1e-9)
       target = e->p.id[i];
   MPI_Allreduce(MPI_IN_PLACE, &target, 1, MPI_LONG, MPI_MAX, e->comm);
   CHECK(target >= 0, "the gas particle at the lid");
   for (long i = 0; i < e->p.n_owned; i++)
-    if (e->p.id[i] == target) e->p.x[1][i] = 1.0 - 0.1 * dx;
+    if (e->p.id[i] == target) e->p.x[1][i] = 1.0 - 0.1 * e->c->dx;   /* within h/2 of the first ghost row */
   engine_test_rebuild(e);
   const long n = e->p.n_owned;
   double *without = calloc(2 * (size_t)n + 1, sizeof(double)), worst_other = 0, got[2] = {0, 0}, want[2] = {0, 0};
+  double scale = 0;   /* the target's |du/dt|: got is a difference of two such, to its round-off */
   c->light_penalty = 0;
   engine_assemble(e);   /* the pipeline's parameters from the case */
   run_pass(e, "Riemann momentum");
@@ -419,17 +473,19 @@ static void check_penalty(struct engine *e, struct case_def *c) {
       continue;
     }
     for (int d = 0; d < 2; d++) got[d] = e->w.dv[d][i] - without[2 * i + d];
+    scale = fmax(hypot(without[2 * i], without[2 * i + 1]), hypot(e->w.dv[0][i], e->w.dv[1][i]));
     penalty_expected(e, i, 0.01, want);
   }
   MPI_Allreduce(MPI_IN_PLACE, got, 2, MPI_DOUBLE, MPI_SUM, e->comm);
   MPI_Allreduce(MPI_IN_PLACE, want, 2, MPI_DOUBLE, MPI_SUM, e->comm);
   MPI_Allreduce(MPI_IN_PLACE, &worst_other, 1, MPI_DOUBLE, MPI_MAX, e->comm);
+  MPI_Allreduce(MPI_IN_PLACE, &scale, 1, MPI_DOUBLE, MPI_MAX, e->comm);
   if (e->rank == 0)
-    printf("penalty at 0.1 dx from the lid: (%.6g, %.6g) m/s^2, brute force (%.6g, %.6g); largest change elsewhere %g\n",
-           got[0], got[1], want[0], want[1], worst_other);
+    printf("penalty at 0.1 dx from the lid: (%.6g, %.6g) m/s^2, brute force (%.6g, %.6g), |du/dt| %.3g; largest change "
+           "elsewhere %g\n", got[0], got[1], want[0], want[1], scale, worst_other);
   CHECK(got[1] < 0 && fabs(got[1]) > 1.0, "the penalty pushes off the lid: %g", got[1]);
-  CHECK(fabs(got[0] - want[0]) <= 1e-12 * fabs(want[1]) && fabs(got[1] - want[1]) <= 1e-12 * fabs(want[1]),
-        "penalty (%g, %g) against (%g, %g)", got[0], got[1], want[0], want[1]);
+  CHECK(fabs(got[0] - want[0]) <= 1e-13 * scale && fabs(got[1] - want[1]) <= 1e-13 * scale,
+        "penalty (%g, %g) against (%g, %g), |du/dt| %g", got[0], got[1], want[0], want[1], scale);
   CHECK(worst_other == 0, "no other particle's du/dt changes: %g", worst_other);
   free(without);
 }
@@ -471,6 +527,15 @@ static void check_stepper(struct engine *e) {
   }
 }
 
+/* Tests 2-4 (and 10) on engine e, which is then closed. */
+static void check_lattice_terms(struct engine *e) {
+  check_reinit(e);
+  check_equal_states(e);
+  check_momentum(e);
+  engine_close_output(e);
+  engine_free(e);
+}
+
 int main(int argc, char **argv) {
   MPI_Init(&argc, &argv);
   int rank;
@@ -486,11 +551,21 @@ int main(int argc, char **argv) {
   if (engine_test_start(dir, two_phase_case, &c, &e)) return check_report("test_riemann");
   CHECK((e.prm.features & FEAT_RIEMANN) && (e.prm.features & FEAT_TRANSPORT_VELOCITY) && !(e.prm.features & (FEAT_SHIFT | FEAT_DAMPER | FEAT_TIC)),
         "riemann pipeline: its own terms only, transport velocity with a light phase");
-  check_reinit(&e);
-  check_equal_states(&e);
-  check_momentum(&e);
-  engine_close_output(&e);
-  engine_free(&e);
+  check_lattice_terms(&e);
+  char dir6[256] = "/tmp/mpsph-test-riemann6-XXXXXX";
+  static struct case_def c6;
+  struct engine e6;
+  if (engine_test_open(dir6, sizeof dir6, multires_case, &c6, &e6)) return check_report("test_riemann");
+  CHECK(e6.prm.multires && e6.prm.support_max == 2 * e6.prm.kern.support, "multi-resolution: the light kernel twice h");
+  check_lattice_terms(&e6);
+  char dir7[256] = "/tmp/mpsph-test-riemann7-XXXXXX";
+  static struct case_def c7;
+  struct engine e7;
+  if (engine_test_open(dir7, sizeof dir7, multires_penalty_case, &c7, &e7)) return check_report("test_riemann");
+  check_reinit(&e7);   /* the ghosts counted as 1/4 of a gas particle's lattice site */
+  check_penalty(&e7, &c7);
+  engine_close_output(&e7);
+  engine_free(&e7);
   if (engine_test_start(dir2, wall_case, &c2, &e2)) return check_report("test_riemann");
   check_walls(&e2);
   engine_close_output(&e2);
@@ -516,7 +591,7 @@ int main(int argc, char **argv) {
   check_stepper(&e1);
   if (rank == 0) {
     char cmd[900];
-    snprintf(cmd, sizeof cmd, "rm -rf '%s' '%s' '%s' '%s' '%s'", dir, dir2, dir3, dir4, dir5);
+    snprintf(cmd, sizeof cmd, "rm -rf '%s' '%s' '%s' '%s' '%s' '%s' '%s'", dir, dir2, dir3, dir4, dir5, dir6, dir7);
     if (system(cmd)) printf("could not remove %s, %s, %s\n", dir, dir2, dir3);
   }
   return engine_test_finish(&e1, dir1, "test_riemann");

@@ -17,7 +17,7 @@ struct mem_estimate {
   double total;
 };
 
-/** Estimated peak memory of the largest rank of a run of case c (kernel support [m]) with
+/** Estimated peak memory of the largest rank of a run of case c (kernel support [m], the coarsest phase's) with
  *  n_kind[k] particles of kind k on n_ranks ranks, per_node of them on each node. */
 struct mem_estimate mem_estimate_rank(const struct case_def *c, double support, const double *n_kind,
                                       int n_ranks, int per_node);

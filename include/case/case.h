@@ -67,6 +67,8 @@ struct phase {
   double viscosity;     /* dynamic viscosity [Pa s]; 0 = artificial viscosity only */
   int incompressible;   /* liquid (receives the acoustic damper) */
   double density_band[2];   /* [min, max] of rho/rho0; leaving it stops the run as unstable [-] */
+  int dx_ratio;         /* particle spacing and smoothing length in units of dx and h: 1, or 2 for a
+                           light phase at the coarser level of multi-resolution (scheme riemann) */
 };
 
 /** A potential-flow mode of a horizontal interface at y = interface (2D): added to the initial
@@ -219,6 +221,25 @@ struct case_def {
   long top_cells_per_rank;       /* the top cells' size: the largest blocks leaving this many per rank */
   long max_steps;                /* stop after this many steps (0 = no limit) */
 };
+
+/** The initial particle spacing of phase ph [m]. */
+static inline double case_phase_dx(const struct case_def *c, int ph) { return c->phases[ph].dx_ratio * c->dx; }
+
+/** The largest dx_ratio of the phases: 1 at single resolution. */
+static inline int case_max_dx_ratio(const struct case_def *c) {
+  int r = 1;
+  for (int ph = 0; ph < c->n_phases; ph++)
+    if (c->phases[ph].dx_ratio > r) r = c->phases[ph].dx_ratio;
+  return r;
+}
+
+/** The largest smoothing length of the phases, the one that sets the cells and the wall layers [m]. */
+static inline double case_h_max(const struct case_def *c) { return case_max_dx_ratio(c) * c->h_over_dx * c->dx; }
+
+/** The lattice volume dx^dimension of a particle at spacing dx [m^dim]. */
+static inline double case_lattice_volume(const struct case_def *c, double dx) {
+  return c->dimension == 2 ? dx * dx : dx * dx * dx;
+}
 
 /** Whether a wall of c moves. */
 static inline int case_walls_move(const struct case_def *c) {

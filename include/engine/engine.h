@@ -21,7 +21,9 @@
  * table is shorter (a static assertion in engine_step_dual.c). */
 #define ENGINE_MAX_OPS 18
 #define ENGINE_CELL_SKIN 1.15   /* cell edge / kernel support: room for motion within a step; the
-                                   neighbour lists use the same radius */
+                                   neighbour lists use the same radius (with multi-resolution the
+                                   cells follow the coarsest support, each pair's list radius its
+                                   support plus the skin at h) */
 
 struct engine;
 
@@ -255,8 +257,9 @@ int engine_adopt_partition(struct engine *e, const int64_t *weight, int keep);
  *  rank 0 (bad input). Collective. */
 int engine_generate(struct engine *e);
 
-/** The largest distance a particle may move within one step: half the cell skin, so that the
- *  cells and neighbour lists built at the start of the step hold every pair in the kernel
+/** The largest distance a particle may move within one step: half the skin of the lists at h
+ *  (with multi-resolution every pair's list has that skin; the cells are wider), so that the
+ *  cells and neighbour lists built at the start of the step hold every pair in its kernel
  *  support at every stage [m]. */
 double engine_shift_max(const struct engine *e);
 

@@ -9,6 +9,8 @@
 #include "base/parts.h"
 #include "parallel/space.h"
 
+#define NLIST_MAX_PHASES 8   /* fluid phases of the lists by phase (at least case.h's CASE_MAX_PHASES) */
+
 /** The candidates of a particle are the slots of the cells around its cell (space.h
  *  neighbour_ranges), concatenated in global cell order then slot order; its list is a bit mask
  *  over them, bit b set when candidate b lies within the build radius. All listed particles of a
@@ -27,6 +29,8 @@ struct nlist {
   int *candidates;       /* scratch: the candidate slots of the cell being read (nlist_enter_cell) */
   long capacity, cell_capacity, candidate_capacity;   /* words, cells, slots */
   double radius2;        /* build radius^2 [m^2] */
+  int by_phase;          /* multi-resolution: build radii by phase (nlist_build) */
+  double phase_radius2[NLIST_MAX_PHASES];  /* with by_phase: the build radius^2 of each fluid phase [m^2] */
   /* the lists at points (nlist_point_add): header and mask, one after the other in the order added */
   uint64_t *point_bits;
   long point_capacity, point_words;   /* words held, words in use */
@@ -67,9 +71,13 @@ static inline int neighbours_next(struct neighbours *nb, long *j) {
 }
 
 /** Build the masks of the owned listed particles of p (the other kinds get none): every other slot
- *  within `radius` [m] at the current positions. Grows the arrays (geometrically) only when
- *  they are too small. */
-void nlist_build(struct nlist *l, const struct space *s, const struct parts *p, double radius);
+ *  within `radius` [m] at the current positions. With phase_radius (multi-resolution: the build
+ *  radius of each of the n_phases <= NLIST_MAX_PHASES fluid phases [m], `radius` then unused), a
+ *  particle of phase a lists a fluid slot of phase b within the larger of the two phases' radii and
+ *  a slot of another kind (a wall ghost, a solid's particle) within its own. Grows the arrays
+ *  (geometrically) only when they are too small. */
+void nlist_build(struct nlist *l, const struct space *s, const struct parts *p, double radius,
+                 const double *phase_radius, int n_phases);
 
 /** Make the candidates of a cell whose stencil ranges are r the ones nlist_of reads back (once per
  *  cell, before the lists of its particles). */

@@ -114,13 +114,28 @@ struct work {
 struct physics_params {
   struct kernel kern;
   double h, vol0;                  /* smoothing length [m], dx^dim [m^dim] */
-  double list_radius;              /* build radius of the neighbour lists: the cell edge [m] */
+  double list_radius;              /* build radius of the neighbour lists at single resolution, and
+                                      of the mirror points' lists: the cell edge [m] */
+  /* multi-resolution (a phase with dx_ratio > 1, scheme riemann; at single resolution every phase's
+     kernel is kern and support_max kern.support) */
+  int multires;                    /* some phase has dx_ratio > 1 */
+  struct kernel phase_kern[CASE_MAX_PHASES];   /* each phase's kernel, of smoothing length dx_ratio h */
+  double phase_vol0[CASE_MAX_PHASES];          /* each phase's lattice volume (dx_ratio dx)^dim [m^dim] */
+  double phase_list_radius[CASE_MAX_PHASES];   /* each phase's build radius (its support and the skin
+                                                  of the lists at h), also of its pairs with a wall
+                                                  ghost or a solid's particle [m] */
+  double support_max;              /* the largest phase kernel's support: it sets the cells, the
+                                      halo and the wall layers [m] */
+  struct kernel chunk_kern[CASE_MAX_PHASES];   /* phase_kern with the cut-off support_max: what a
+                                                  phase's pair chunks are filled with (so they keep
+                                                  every pair; a pair of another kernel, or beyond its
+                                                  own support, is evaluated again or dropped) */
   double c_max;                    /* largest phase sound speed [m/s] */
   unsigned features;               /* FEAT_* of the assembled pipeline */
   struct interface_weights iface[3];   /* eps/phi/kappa per pair relation (case interface mode) */
   double damper_coef[CASE_MAX_PHASES + 1];  /* alpha2 c0 h of phase k at [k + 1]; 0 for gases, walls [m^2/s] */
-  double lattice_w_sum;            /* scheme riemann: sum of W over the undisturbed lattice, self
-                                      included [1/m^dim] */
+  double lattice_w_sum[CASE_MAX_PHASES];   /* scheme riemann: each phase's sum of its W over its
+                                              undisturbed lattice, self included [1/m^dim] */
   double light_penalty[CASE_MAX_PHASES];   /* scheme riemann: physics.light_penalty for a light
                                               phase, 0 for the others [-] */
   unsigned body_walls;             /* bit w: wall w is a rigid body (FEAT_BODIES) */

@@ -45,8 +45,8 @@ typedef void (*particle_fn)(struct pass_ctx *ctx, long i, const struct neighbour
  *  changes no result. */
 void pass_for_each_owned(struct pass_ctx *ctx, particle_fn fluid, particle_fn wall);
 
-/** Build the neighbour lists of the owned listed (fluid) particles within ctx->prm->list_radius (once per
- *  step, at the first stage). */
+/** Build the neighbour lists of the owned listed (fluid) particles within ctx->prm->list_radius, with
+ *  multi-resolution within the pair's phases' phase_list_radius (once per step, at the first stage). */
 void pass_neighbour_lists(struct pass_ctx *ctx);
 
 /** Volumes m/rho of all slots (owned and halo) for the pair passes of this stage [m^dim]; runs

@@ -68,6 +68,11 @@ RIEMANN = {"scheme": "riemann", "kernel": "wendland-c2", "resolution.h_over_dx":
 RIEMANN_HYDRO = {**RIEMANN, "phases.0.c0": 62.6, "phases.0.gamma": 1, "phases.1.c0": 62.6, "phases.1.gamma": 1,
                  "physics.u_max": 6.26}
 RIEMANN_DB2 = {**RIEMANN, "phases.0.gamma": 1, "phases.1.c0": 48.5, "phases.1.gamma": 1, "physics.u_max": 4.85}
+# paper 002 section 3.5: the air (phase 1) at twice the water's spacing and smoothing length; its
+# boxes must be whole numbers of 2 dx (the dam break's 0.6 m column: dx = 0.012 m, not 0.024)
+MULTIRES = {"phases.1.dx_ratio": 2}
+MULTIRES_LABEL = "riemann, multi-resolution (air at 2 dx)"
+MULTIRES_HYDRO_DOMAIN = {"domain.min": "[-0.4,-0.4]", "domain.max": "[1.4,2.4]"}   # 6 ghost layers at dx = 0.05
 # paper 003 (notes seeds-003-004 A3, A5, C1): one c0 = 50 m/s and the linear EOS in both phases,
 # p_b = 500 Pa, alpha_w = 0.05, mu_w : mu_g = 40 : 1 (the gas viscosity that adds to alpha's),
 # CFL 0.5
@@ -209,6 +214,27 @@ STUDIES = [
                   rung(0.024, 2, label="generalized-dissipation", **IMPACT_RUN, **GD),
                   rung(0.048, 2, label="delta-sph", **DB2_COARSE, **IMPACT_RUN, **DELTA_SPH),
                   rung(0.024, 2, label="delta-sph", **IMPACT_RUN, **DELTA_SPH)]),
+    {
+        "id": "hydrostatic-2phase-multires",
+        "case": "hydrostatic-2phase",
+        "title": "Two-phase hydrostatic tank under scheme riemann to t sqrt(g/Hw) = 40: the air at 2 dx "
+                 "(multi-resolution, paper 002 sections 3.5 and 4.1) against single resolution",
+        "length": ("Hw", 1.0),
+        "reference": "analytic hydrostatic pressure, water under air, p = 0 at the lid",
+        "error": "max centreline |p - p_exact| / (rho_w g Hw), last snapshot (the study hydrostatic-2phase's)",
+        "threshold": 0.02,
+        "metric": metrics.hydrostatic_centreline,
+        "rungs": [rung(dx, 2, dx > 0.03, label=label, **domain, **RIEMANN_HYDRO, **sets, **{"time.end": 12.77})
+                  for dx, domain in ((0.05, MULTIRES_HYDRO_DOMAIN), (0.025, {}))
+                  for label, sets in (("riemann", {}), (MULTIRES_LABEL, MULTIRES))],
+        "plot": "hydrostatic",
+    },
+    impact_study("dambreak-2phase-multires", "dambreak-2phase",
+                 "Two-phase dam break under scheme riemann, first impact at P1 (Buchner 2002): the air at 2 dx "
+                 "(multi-resolution, paper 002 sections 3.5 and 4.2) against single resolution",
+                 [rung(0.024, 2, label="riemann", **IMPACT_RUN, **RIEMANN_DB2),
+                  rung(0.012, 2, label="riemann", **IMPACT_RUN, **RIEMANN_DB2),
+                  rung(0.012, 2, label=MULTIRES_LABEL, **IMPACT_RUN, **RIEMANN_DB2, **MULTIRES)]),
     {
         "id": "dambreak-pocket",
         "case": "dambreak-2phase",
@@ -514,6 +540,27 @@ STUDIES.append({
     "plot": "lobovsky",
 })
 
+# paper 002 section 4.2: the same experiment in 2D, in its tank (5.366 H x 2.5 H) with its settings,
+# the air at 2 dx (multi-resolution) and at dx; dx = 0.005 m is the coarsest at which every air box
+# is a whole number of 2 dx (1.01 m)
+STUDIES.append({
+    "id": "dambreak-lobovsky-2d",
+    "case": "dambreak-lobovsky-2d",
+    "title": "2D two-phase dam break, H = 300 mm, Lobovsky et al. 2014, in paper 002's tank (paper 002 section 4.2): "
+             "multi-resolution against single resolution",
+    "length": ("H", 0.3),
+    "reference": "the experiment's water levels H1-H4 and pressures #1-#4 (one record), "
+                 "cases/dambreak-3d-lobovsky/reference/%s and %s" % LOBOVSKY_DATA,
+    "error": "as study dambreak-3d-lobovsky's: the worst of each gauge's largest |H_SPH - H_exp| / H before its second "
+             "jump over 0.10 and |peak_SPH / peak_exp - 1| of sensors #3 and #4 over 0.30; 1 is at a limit",
+    "threshold": 1.0,
+    "metric": functools.partial(metrics.lobovsky_dambreak,
+                                levels=DATA.format(case="dambreak-3d-lobovsky", file=LOBOVSKY_DATA[0]),
+                                pressures=DATA.format(case="dambreak-3d-lobovsky", file=LOBOVSKY_DATA[1])),
+    "rungs": [rung(0.005, 2, label=MULTIRES_LABEL), rung(0.005, 2, label="riemann", **{"phases.1.dx_ratio": 1})],
+    "plot": "lobovsky",
+})
+
 # 3D sloshing at resonance, paper 004 section 4.1.1 (notes seeds-003-004 C5): no record of Liu and
 # Lin's experiment is stored, so the reference is the linear resonant envelope (notes, [D])
 SLOSH3D_QUICK = {"time.end": 3.0}   # the linear phase: eta < 0.04 m = h_w / 4
@@ -563,18 +610,22 @@ STUDIES.append({
 })
 
 GATE_LINEAR = "riemann, paper 002's linear solid correction"   # the elastic solids' paper correction
-STUDIES.append({
-    "id": "elastic-gate-antoci",
-    "case": "elastic-gate-antoci",
-    "title": "Dam break through an elastic rubber gate (Antoci et al. 2007; paper 002 section 4.4 without air), to t = 0.4 s",
+GATE_DATA = "fsi_elastic_gate_antoci2007_tip_displacement_digitized.csv"
+# what the gate's studies share: the measured free end, the metric and the threshold
+GATE_STUDY = {
     "length": ("b", 0.005),
-    "reference": "the gate's free-end displacement measured by Antoci et al. 2007, two digitisations, "
-                 "reference/fsi_elastic_gate_antoci2007_tip_displacement_digitized.csv",
     "error": "RMS of u_SPH - u_exp over the experiment's points in 0-0.4 s in units of max |u_exp|, the larger of "
              "the horizontal and vertical displacement; threshold 15 % (the notes' early-stage band, section 2.4)",
     "threshold": 0.15,
-    "metric": functools.partial(metrics.gate_tip, reference=DATA.format(
-        case="elastic-gate-antoci", file="fsi_elastic_gate_antoci2007_tip_displacement_digitized.csv")),
+    "metric": functools.partial(metrics.gate_tip, reference=DATA.format(case="elastic-gate-antoci", file=GATE_DATA)),
+    "plot": "gate",
+}
+STUDIES.append({
+    **GATE_STUDY,
+    "id": "elastic-gate-antoci",
+    "case": "elastic-gate-antoci",
+    "title": "Dam break through an elastic rubber gate (Antoci et al. 2007; paper 002 section 4.4 without air), to t = 0.4 s",
+    "reference": "the gate's free-end displacement measured by Antoci et al. 2007, two digitisations, reference/" + GATE_DATA,
     # mpsph's quadratic correction needs 3 particles through the thickness (4 at dx = b/4); paper
     # 002's linear one runs at b/2 too (the quick rung)
     # b/8 (0.000625) costs about 30 minutes on 2 ranks, most of it in the solid: measured with an
@@ -582,7 +633,18 @@ STUDIES.append({
     "rungs": [rung(0.00125, 2, label="riemann"),
               rung(0.0025, 1, True, label=GATE_LINEAR, **{"solids.0.correction": "linear"}),
               rung(0.00125, 2, label=GATE_LINEAR, **{"solids.0.correction": "linear"})],
-    "plot": "gate",
+})
+
+STUDIES.append({
+    **GATE_STUDY,
+    "id": "elastic-gate-air",
+    "case": "elastic-gate-air",
+    "title": "Dam break through an elastic rubber gate in a closed tank of air (Antoci et al. 2007; paper 002 section "
+             "4.4 with air), to t = 0.4 s: multi-resolution against single resolution",
+    "reference": "the gate's free-end displacement measured by Antoci et al. 2007 (without air), two digitisations, "
+                 "cases/elastic-gate-antoci/reference/" + GATE_DATA,
+    # the case's air at 2 dx (paper 002's two-level resolution), and at dx (its single resolution)
+    "rungs": [rung(0.00125, 2, label=MULTIRES_LABEL), rung(0.00125, 2, label="riemann", **{"phases.1.dx_ratio": 1})],
 })
 
 PLATE_003 = {"solids.0.min": "[0.292,-0.013]"}

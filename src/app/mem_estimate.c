@@ -166,6 +166,16 @@ static void largest_share(const double *n_kind, const double *bytes, int n_ranks
     }
 }
 
+/* Bytes more per fluid particle with multi-resolution (a model, not fitted): a neighbour list's
+ * mask has a bit per candidate of the 3^dim cells around its particle's cell, which are sized by
+ * the coarsest phase's support (`support` here, dx_ratio r times h's), so it holds r^dim times the
+ * single-resolution candidates, 3^dim cells of (skin support(h)/dx)^dim particles at dx. */
+static double multires_list_bytes(const struct case_def *c, double support) {
+  int r = case_max_dx_ratio(c), dim = c->dimension;
+  double cell = ENGINE_CELL_SKIN * support / r / c->dx;   /* the single-resolution cell edge / dx */
+  return (pow(r, dim) - 1) * pow(3 * cell, dim) / 8;
+}
+
 struct mem_estimate mem_estimate_rank(const struct case_def *c, double support, const double *n_kind,
                                       int n_ranks, int per_node) {
   struct mem_estimate m = {0};   /* owned[KIND_SOLID] stays 0: solids are not estimated (kind_bytes) */
@@ -178,6 +188,7 @@ struct mem_estimate mem_estimate_rank(const struct case_def *c, double support, 
     share += m.owned[k];
     m.particle_bytes += m.owned[k] * bytes[k];
   }
+  m.particle_bytes += m.owned[KIND_FLUID] * multires_list_bytes(c, support);
   m.halo = n_ranks > 1 ? rank_halo(c, support, share, total, n_ranks) : 0;
   m.particle_bytes += m.halo * halo_particle_bytes[c->dimension - 2];
   if (n_ranks > 1) m.particle_bytes += share * moving_bytes[c->dimension - 2];

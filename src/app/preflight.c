@@ -42,7 +42,7 @@ struct sizing {
 static int size_case(const struct case_def *c, int n_ranks, int per_node, double available, int always,
                      struct sizing *s, char *err, size_t len) {
   struct kernel k;
-  kernel_init(&k, c->kernel, c->dimension, c->h_over_dx * c->dx);
+  kernel_init(&k, c->kernel, c->dimension, case_h_max(c));   /* the coarsest phase's */
   s->support = k.support;
   s->n = init_visit_count(c, k.support);
   s->n_kind[KIND_SOLID] = 0;   /* solids are small and not estimated (mem_estimate.c) */
@@ -176,7 +176,11 @@ static void print_counts(const struct case_def *c, const struct sizing *s) {
       printf(" (%s %ld)", c->phases[ph].name, s->counts.fluid[ph]);
     printf(", %ld wall (%d layers)", s->counts.n_wall, init_wall_layers(c, s->support));
   }
-  printf("; smoothing length %g m, kernel support %g m\n", c->h_over_dx * c->dx, s->support);
+  if (case_max_dx_ratio(c) > 1)
+    printf("; smoothing length %g m (%g m in the coarsest phase), its kernel support %g m\n", c->h_over_dx * c->dx,
+           case_h_max(c), s->support);
+  else
+    printf("; smoothing length %g m, kernel support %g m\n", c->h_over_dx * c->dx, s->support);
 }
 
 static void print_memory(const struct case_def *c, const struct sizing *s, int n_ranks, int per_node,

@@ -91,6 +91,7 @@ static const struct rule R_TOP_CELLS = {"an integer from 1 to 1048576", 1, 0, 10
 static const struct rule R_DIMENSION = {"2 or 3", 2, 0, 3, 1};
 static const struct rule R_MODE = {"an integer from 1 to 4", 1, 0, 4, 1};
 static const struct rule R_H_OVER_DX = {"a number > 0 and <= 10", 0, 1, 10, 0};
+static const struct rule R_DX_RATIO = {"1 or 2", 1, 0, 2, 1};
 static const struct rule R_POISSON = {"a number > -1 and < 0.5", -1, 1, 0.5, 0};   /* 0.5 itself: poisson_below_half */
 
 /* Default density bands [min, max] / rho0 of the instability check: a liquid, a gas. */
@@ -1387,6 +1388,9 @@ static const struct case_key PHASE_ITEM_KEYS[] = {
     PHASE_KEY("density_band", KEY_BAND, density_band, .computed = band_default,
               .def_doc = "`[0.5, 2]` for a liquid, `[0.1, 10]` for a gas",
               .doc = "a fluid particle of the phase whose ρ/ρ0 leaves the band stops the run as unstable (status 2) [-]"),
+    PHASE_KEY("dx_ratio", KEY_INTEGER, dx_ratio, .rule = &R_DX_RATIO, .def = {1},
+              .doc = "the phase's particle spacing and smoothing length in units of `resolution.dx` and h: `2` puts a "
+              "light phase at twice the spacing (multi-resolution, paper 002 §3.5; scheme riemann only)"),
 };
 
 #define SOLID_KEY(name, kind, member, ...)                                                        \

@@ -114,10 +114,6 @@ int init_wall_layers(const struct case_def *c, double support) {
   return (int)ceil(support / c->dx - BOUNDARY_TOL);
 }
 
-static double cell_volume(const struct case_def *c) {
-  return c->dimension == 2 ? c->dx * c->dx : c->dx * c->dx * c->dx;
-}
-
 void init_add_fluid(const struct case_def *c, int k, const double *x, int64_t id, struct parts *p) {
   const struct phase *ph = &c->phases[c->fluids[k].phase];
   long i = p->n_owned++;
@@ -132,7 +128,7 @@ void init_add_fluid(const struct case_def *c, int k, const double *x, int64_t id
   }
   p->p[i] = pressure;
   p->rho[i] = eos_density(ph, pressure);
-  p->m[i] = p->rho[i] * cell_volume(c);
+  p->m[i] = p->rho[i] * case_lattice_volume(c, case_phase_dx(c, c->fluids[k].phase));
   p->phase[i] = c->fluids[k].phase;
   p->id[i] = id;
   p->cell[i] = -1;
@@ -154,7 +150,7 @@ void init_add_ghost(const struct case_def *c, int w, const double *x, int64_t id
   }
   p->p[i] = 0;
   p->rho[i] = c->phases[0].rho0;
-  p->m[i] = p->rho[i] * cell_volume(c);
+  p->m[i] = p->rho[i] * case_lattice_volume(c, c->dx);
   p->phase[i] = PHASE_WALL;
   p->id[i] = id;
   p->cell[i] = -1;
@@ -191,14 +187,15 @@ static int tank_axis(const struct shape *s, int d, double dx, int layers, double
   return n;
 }
 
-/* A fluid region's lattice, anchored at the case's lattice origin or the shape's anchor. */
+/* A fluid region's lattice at its phase's spacing, anchored at the case's lattice origin or the
+ * shape's anchor. */
 static void open_fluid(struct init_source *s, const struct case_def *c, int k) {
   const struct shape *sh = &c->fluids[k].shape;
   double lo[3], hi[3], anchor[3];
   shape_bbox(sh, c->dimension, 0, lo, hi);
   if (c->has_lattice_origin) memcpy(anchor, c->lattice_origin, sizeof anchor);
   else shape_anchor(sh, c->dimension, anchor);
-  lattice_cover(&s->l, c->dimension, c->dx, anchor, lo, hi);
+  lattice_cover(&s->l, c->dimension, case_phase_dx(c, c->fluids[k].phase), anchor, lo, hi);
   for (int d = 0; d < 3; d++) s->n[d] = s->l.count[d];
 }
 
@@ -289,7 +286,7 @@ static long next_candidate(const struct init_source *s, int dim, long ix, long i
  * overlap). */
 static int fluid_node(const struct case_def *c, int k, const double *x, char *err, size_t len) {
   if (!shape_contains(&c->fluids[k].shape, c->dimension, x) || walls_solid_at(c, NULL, x, NULL) >= 0) return 0;
-  if (wall_distance(c, x) < 0.5 * c->dx * (1 - BOUNDARY_TOL)) return 0;
+  if (wall_distance(c, x) < 0.5 * case_phase_dx(c, c->fluids[k].phase) * (1 - BOUNDARY_TOL)) return 0;
   int j = earlier_region(c, k, x);
   if (j < 0) return 1;
   snprintf(err, len, "%s: fluids.%d overlaps fluids.%d (both contain the point (%g, %g%s)); "
@@ -433,7 +430,8 @@ static double tank_bound(const struct shape *s, int dim, int layers, double dx) 
 
 double init_visit_count(const struct case_def *c, double support) {
   double total = init_wall_visit_count(c, support);
-  for (int k = 0; k < c->n_fluids; k++) total += lattice_bound(&c->fluids[k].shape, c->dimension, 0, c->dx);
+  for (int k = 0; k < c->n_fluids; k++)
+    total += lattice_bound(&c->fluids[k].shape, c->dimension, 0, case_phase_dx(c, c->fluids[k].phase));
   return isnan(total) ? INFINITY : total;
 }
 

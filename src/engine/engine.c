@@ -242,19 +242,39 @@ int engine_cell_grid(const struct case_def *c, double support, struct grid *g) {
   return grid_init(g, c->dimension, c->domain_min, c->domain_max, support * ENGINE_CELL_SKIN);
 }
 
+/* Each phase's kernel, lattice volume and list radius, and the largest support (multi-resolution). */
+static void setup_phase_kernels(struct engine *e) {
+  const struct case_def *c = e->c;
+  e->prm.multires = case_max_dx_ratio(c) > 1;
+  e->prm.support_max = 0;
+  for (int ph = 0; ph < c->n_phases; ph++) {
+    kernel_init(&e->prm.phase_kern[ph], c->kernel, c->dimension, e->prm.h * c->phases[ph].dx_ratio);
+    e->prm.phase_vol0[ph] = case_lattice_volume(c, case_phase_dx(c, ph));
+    /* the skin of h's lists: the motion allowed within a step (engine_shift_max) is the same for every pair */
+    e->prm.phase_list_radius[ph] = e->prm.phase_kern[ph].support + (ENGINE_CELL_SKIN - 1.0) * e->prm.kern.support;
+    e->prm.support_max = fmax(e->prm.support_max, e->prm.phase_kern[ph].support);
+  }
+  for (int ph = 0; ph < c->n_phases; ph++) {
+    e->prm.chunk_kern[ph] = e->prm.phase_kern[ph];
+    e->prm.chunk_kern[ph].support = e->prm.support_max;
+    e->prm.chunk_kern[ph].support2 = e->prm.support_max * e->prm.support_max;
+  }
+}
+
 /* Kernel, grid, halo depth. Returns 0 or 1. */
 static int setup_space(struct engine *e) {
   const struct case_def *c = e->c;
   e->prm.h = c->h_over_dx * c->dx;
-  e->prm.vol0 = c->dimension == 2 ? c->dx * c->dx : c->dx * c->dx * c->dx;
+  e->prm.vol0 = case_lattice_volume(c, c->dx);
   kernel_init(&e->prm.kern, c->kernel, c->dimension, e->prm.h);
-  e->prm.list_radius = e->prm.kern.support * ENGINE_CELL_SKIN;
+  setup_phase_kernels(e);
+  e->prm.list_radius = e->prm.support_max * ENGINE_CELL_SKIN;
   struct grid g;
-  if (engine_cell_grid(c, e->prm.kern.support, &g)) {
+  if (engine_cell_grid(c, e->prm.support_max, &g)) {
     report(e, "the domain has too many cells for this resolution (more than 2^31)");
     return 1;
   }
-  int layers = engine_halo_layers(c, &g, e->prm.kern.support);
+  int layers = engine_halo_layers(c, &g, e->prm.support_max);
   space_init(&e->space, &g, e->rank, e->n_ranks, layers, c->top_cells_per_rank);
   e->prm.c_max = 0;
   for (int ph = 0; ph < c->n_phases; ph++) e->prm.c_max = fmax(e->prm.c_max, c->phases[ph].c0);

@@ -1,5 +1,6 @@
 /* engine_step_dual.c — dual-criteria time stepping of scheme riemann (paper 002 section 2.5,
- * Eqs. 24-28; notes seed-002 section 1.10), single resolution, with the elastic solids advanced
+ * Eqs. 24-28; notes seed-002 section 1.10; the time steps take h, the heavy phases' also with
+ * multi-resolution), with the elastic solids advanced
  * after each acoustic sub-step (engine/solids.h). One engine step is one
  * advection step dt_ad: the cells and neighbour lists (built by engine_rebuild after the previous
  * step), the density re-initialisation and the transport-velocity shift of the light phases belong
@@ -56,9 +57,10 @@ void engine_assemble_dual(struct engine *e) {
     e->ops[e->n_ops++] = (struct stage_op){.name = dual_table[k].name, .pass = dual_table[k].pass,
                                            .halo_fields = dual_table[k].halo_fields};
   }
-  e->prm.lattice_w_sum = lattice_kernel_sum(&e->prm.kern, e->c->dx);
-  for (int ph = 0; ph < e->c->n_phases; ph++)
+  for (int ph = 0; ph < e->c->n_phases; ph++) {
+    e->prm.lattice_w_sum[ph] = lattice_kernel_sum(&e->prm.phase_kern[ph], case_phase_dx(e->c, ph));
     e->prm.light_penalty[ph] = riemann_light_phase(e->c, ph) ? e->c->light_penalty : 0.0;
+  }
 }
 
 /* Run operation id of the table if the pipeline has it. */

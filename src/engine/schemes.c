@@ -70,17 +70,46 @@ static int bodies_refused(const struct case_def *c, const char *scheme, char *er
   return 0;
 }
 
-/* Elastic solids are coupled to the fluid by scheme riemann's pair terms only: the others refuse
+/* The first phase with dx_ratio > 1, or -1. */
+static int coarse_phase(const struct case_def *c) {
+  for (int ph = 0; ph < c->n_phases; ph++)
+    if (c->phases[ph].dx_ratio > 1) return ph;
+  return -1;
+}
+
+/* Elastic solids and multi-resolution are in scheme riemann's pair terms only: the others refuse
  * them. Returns 0 or 1. */
-static int solids_refused(const struct case_def *c, const char *scheme, char *err, size_t len) {
+static int riemann_only_refused(const struct case_def *c, const char *scheme, char *err, size_t len) {
+  int ph = coarse_phase(c);
+  if (ph >= 0)
+    return snprintf(err, len, "%s: phases.%d.dx_ratio: multi-resolution is not available with scheme %s in this "
+                    "version (scheme riemann has it)", c->source_file, ph, scheme), 1;
   if (!c->n_solids) return 0;
   return snprintf(err, len, "%s: solids: elastic solids are not available with scheme %s in this version "
                   "(scheme riemann has them)", c->source_file, scheme), 1;
 }
 
+/* Scheme riemann's multi-resolution: a coarser phase must be a light one (paper 002: h_L >= h_H),
+ * and the surface tension's colour gradient and a wave gauge's colour are single resolution.
+ * Returns 0 or 1. */
+static int multires_refused(const struct case_def *c, char *err, size_t len) {
+  for (int ph = 0; ph < c->n_phases; ph++)
+    if (c->phases[ph].dx_ratio > 1 && !riemann_light_phase(c, ph))
+      return snprintf(err, len, "%s: phases.%d.dx_ratio: only a light phase (a gas lighter than another phase) "
+                      "may be coarser (paper 002's multi-resolution)", c->source_file, ph), 1;
+  if (case_max_dx_ratio(c) > 1 && c->surface_tension > 0)
+    return snprintf(err, len, "%s: physics.surface_tension: not available with multi-resolution (phases.%d.dx_ratio "
+                    "> 1) in this version", c->source_file, coarse_phase(c)), 1;
+  for (int k = 0; k < c->n_probes; k++)
+    if (c->probes[k].kind == PROBE_ELEVATION && c->phases[c->probes[k].phase].dx_ratio > 1)
+      return snprintf(err, len, "%s: probes.%d: a wave gauge of a phase with dx_ratio > 1 is not available in this "
+                      "version (its colour is summed at h)", c->source_file, k), 1;
+  return 0;
+}
+
 /* Schemes delta-plus and delta-sph refuse the solids. */
 static int delta_refused(const struct case_def *c, char *err, size_t len) {
-  return solids_refused(c, c->scheme == SCHEME_DELTA_SPH ? "delta-sph" : "delta-plus", err, len);
+  return riemann_only_refused(c, c->scheme == SCHEME_DELTA_SPH ? "delta-sph" : "delta-plus", err, len);
 }
 
 /* The options of paper 000 that schemes same-phase-continuity and generalized-dissipation do not
@@ -104,7 +133,7 @@ static int delta_plus_option(const struct case_def *c) {
 static int same_phase_terms(const struct case_def *c, char *err, size_t len) {
   int k = delta_plus_option(c);
   if (coupled_viscosity_refused(c, "same-phase-continuity", "paper 003 Eq. 21 with the harmonic mean", err, len) ||
-      bodies_refused(c, "same-phase-continuity", err, len) || solids_refused(c, "same-phase-continuity", err, len))
+      bodies_refused(c, "same-phase-continuity", err, len) || riemann_only_refused(c, "same-phase-continuity", err, len))
     return 1;
   if (k < 0) return 0;
   snprintf(err, len, "%s: physics.%s: only %s with scheme same-phase-continuity (paper 003 has no such term)",
@@ -119,7 +148,7 @@ static int gd_unsupported(const struct case_def *c, char *err, size_t len) {
   int k = delta_plus_option(c);
   if (coupled_viscosity_refused(c, "generalized-dissipation", "paper 004 Eq. 10", err, len) ||
       bodies_refused(c, "generalized-dissipation", err, len) ||
-      solids_refused(c, "generalized-dissipation", err, len))
+      riemann_only_refused(c, "generalized-dissipation", err, len))
     return 1;
   if (k < 0) return 0;
   snprintf(err, len, "%s: physics.%s: not part of scheme generalized-dissipation (use none, false, 0 or sum)",
@@ -130,7 +159,7 @@ static int gd_unsupported(const struct case_def *c, char *err, size_t len) {
 /* Scheme riemann: fixed walls only (its dual stepper does not move walls); its viscous pair term
  * takes the harmonic mean of the two particles' viscosities, across phases too: refuse none. */
 static int riemann_supported(const struct case_def *c, char *err, size_t len) {
-  if (bodies_refused(c, "riemann", err, len)) return 1;
+  if (bodies_refused(c, "riemann", err, len) || multires_refused(c, err, len)) return 1;
   for (int w = 0; w < c->n_walls; w++)
     if (c->walls[w].moving)
       return snprintf(err, len, "%s: walls: scheme riemann supports fixed walls only in this version", c->source_file), 1;

@@ -5,6 +5,8 @@
  * cells, numbered as a serial generation numbers them. No rank enumerates the whole domain twice
  * and no particle is sent anywhere. */
 #include <limits.h>
+#include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include "engine/engine.h"
@@ -225,9 +227,30 @@ static int number_and_generate(struct engine *e, const struct init_rows *rows, c
   return status;
 }
 
+/* On rank 0, a warning for each box region of a coarser phase (dx_ratio > 1) that is not a whole
+ * number of its spacings across: its last row stands off the box's far face (a gap at a wall or at
+ * the next region). */
+static void warn_coarse_misfit(const struct engine *e) {
+  const struct case_def *c = e->c;
+  for (int k = 0; k < c->n_fluids && e->rank == 0; k++) {
+    const struct shape *s = &c->fluids[k].shape;
+    double dx = case_phase_dx(c, c->fluids[k].phase);
+    for (int d = 0; d < c->dimension && s->kind == SHAPE_BOX && dx > c->dx; d++) {
+      double n = (s->max[d] - s->min[d]) / dx;
+      if (fabs(n - round(n)) > 1e-6 * n) {
+        fprintf(stderr, "mpsph: warning: fluids.%d (phase %s at %g m): its box is %g spacings wide along axis %d, "
+                "not a whole number: its last row stands off the box's upper face\n", k,
+                c->phases[c->fluids[k].phase].name, dx, n, d);
+        break;
+      }
+    }
+  }
+}
+
 int engine_generate(struct engine *e) {
+  warn_coarse_misfit(e);
   struct init_rows rows;
-  init_rows_open(&rows, e->c, e->prm.kern.support);
+  init_rows_open(&rows, e->c, e->prm.support_max);
   long *starts = mem_calloc(e->n_ranks + 1, sizeof(long), "row blocks");
   for (int r = 0; r < e->n_ranks; r++) starts[r] = block_start(&rows, r, e->n_ranks);
   starts[e->n_ranks] = rows.n_rows;

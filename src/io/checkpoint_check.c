@@ -127,7 +127,7 @@ static int header_rules(const struct engine *e, const struct case_def *c,
   r[n++] = integer_rule("/header/dimension", info->dimension, c->dimension, c->dimension,
                         "the dimension of its case");
   r[n++] = integer_rule("/header/n_particles", (double)info->n_particles, 1,
-                        floor(init_visit_count(c, e->prm.kern.support)) + (double)e->solids.view.n,
+                        floor(init_visit_count(c, e->prm.support_max)) + (double)e->solids.view.n,
                         "at most the lattice nodes its case fills with fluid and ghosts, and its solids' particles");
   return n;
 }
@@ -414,7 +414,7 @@ int checkpoint_check(const struct engine *e, const struct case_def *c,
   struct rule r[MAX_RULES];
   long mine = e->p.n_owned, first_row = 0, n_particles = info->n_particles;
   struct particle_bounds bounds = {c, n_particles,
-                                   2 * init_wall_layers(c, e->prm.kern.support) * c->dx, 0, ""};
+                                   2 * init_wall_layers(c, e->prm.support_max) * c->dx, 0, ""};
   held_kinds(&e->p, &bounds);
   MPI_Exscan(&mine, &first_row, 1, MPI_LONG, MPI_SUM, e->comm);
   if (e->rank == 0) first_row = 0;   /* MPI_Exscan leaves rank 0's result undefined */

@@ -1,5 +1,6 @@
 /* nlist.c — per-step neighbour lists built from the cell index, stored as bit masks over the
  * candidates of each cell's stencil: of the owned fluid, and of fixed points (mirror points). */
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include "parallel/nlist.h"
@@ -15,34 +16,43 @@ static void *grow(void *a, long *capacity, long needed, size_t size) {
   return q;
 }
 
-/* mark_within in `dim` dimensions (a constant where it is inlined: the axis loop unrolls). */
+/* mark_within in `dim` dimensions (a constant where it is inlined: the axis loop unrolls); with
+ * BY_PHASE (a constant too) a fluid candidate j's radius^2 is the larger of radius2 and
+ * phase_radius2[its phase]. */
 static inline void mark_within_dim(const struct parts *p, const int dim, const double *x, long self,
-                                   double radius2, const struct neighbour_ranges *r, uint64_t *mask) {
+                                   double radius2, const double *phase_radius2, const int BY_PHASE,
+                                   const struct neighbour_ranges *r, uint64_t *mask) {
   const double *xj[3] = {p->x[0], p->x[1], dim == 3 ? p->x[2] : NULL};
   long b = 0;
   for (int k = 0; k < r->n; k++)
     for (long j = r->start[k]; j < r->start[k] + r->count[k]; j++, b++) {
-      double r2 = 0;
+      double r2 = 0, limit2 = radius2;
       for (int d = 0; d < dim; d++) r2 += (x[d] - xj[d][j]) * (x[d] - xj[d][j]);
-      if (r2 < radius2 && j != self) mask[b / WORD_BITS] |= (uint64_t)1 << (b % WORD_BITS);
+      if (BY_PHASE && p->phase[j] >= 0) limit2 = fmax(limit2, phase_radius2[p->phase[j]]);
+      if (r2 < limit2 && j != self) mask[b / WORD_BITS] |= (uint64_t)1 << (b % WORD_BITS);
     }
 }
 
-/* Set in mask the bits of the candidates r within radius2 of point x, but slot self. The squared
+/* Set in mask the bits of the candidates r within radius2 of point x, but slot self (with
+ * phase_radius2, within the larger of radius2 and the candidate's phase's). The squared
  * distance is summed as the pair loops sum it, so a candidate is listed exactly when they find it
  * near. */
 static inline void mark_within(const struct parts *p, const double *x, long self, double radius2,
-                               const struct neighbour_ranges *r, uint64_t *mask) {
-  if (p->dim == 3) mark_within_dim(p, 3, x, self, radius2, r, mask);
-  else mark_within_dim(p, 2, x, self, radius2, r, mask);
+                               const double *phase_radius2, const struct neighbour_ranges *r, uint64_t *mask) {
+  if (phase_radius2 && p->dim == 3) mark_within_dim(p, 3, x, self, radius2, phase_radius2, 1, r, mask);
+  else if (phase_radius2) mark_within_dim(p, 2, x, self, radius2, phase_radius2, 1, r, mask);
+  else if (p->dim == 3) mark_within_dim(p, 3, x, self, radius2, NULL, 0, r, mask);
+  else mark_within_dim(p, 2, x, self, radius2, NULL, 0, r, mask);
 }
 
-/* Set in mask the bits of the candidates r within the build radius of owned slot i (not i itself). */
+/* Set in mask the bits of the candidates r within the build radius of owned slot i (not i itself):
+ * with radii by phase, i's phase's, or a fluid candidate's phase's when larger. */
 static void mark_neighbours(const struct nlist *l, const struct parts *p, long i,
                             const struct neighbour_ranges *r, uint64_t *mask) {
   double x[3] = {0, 0, 0};
   for (int d = 0; d < p->dim; d++) x[d] = p->x[d][i];
-  mark_within(p, x, i, l->radius2, r, mask);
+  if (!l->by_phase) mark_within(p, x, i, l->radius2, NULL, r, mask);
+  else mark_within(p, x, i, l->phase_radius2[p->phase[i]], l->phase_radius2, r, mask);
 }
 
 /* Particles of cell c that have a neighbour list (of a KIND_LISTED kind, base/kinds.h). */
@@ -64,8 +74,11 @@ static long place_cell(struct nlist *l, long k, const struct neighbour_ranges *r
   return words * n_listed;
 }
 
-void nlist_build(struct nlist *l, const struct space *s, const struct parts *p, double radius) {
+void nlist_build(struct nlist *l, const struct space *s, const struct parts *p, double radius,
+                 const double *phase_radius, int n_phases) {
   l->radius2 = radius * radius;
+  l->by_phase = phase_radius != NULL;
+  for (int ph = 0; l->by_phase && ph < n_phases; ph++) l->phase_radius2[ph] = phase_radius[ph] * phase_radius[ph];
   l->cells = grow(l->cells, &l->cell_capacity, s->n_owned_cells, sizeof(struct nlist_cell));
   long n = 0;
   for (long k = 0; k < s->n_owned_cells; k++) {
@@ -94,7 +107,7 @@ void nlist_point_add(struct nlist *l, const struct parts *p, const double *x, co
   l->point_bits = grow(l->point_bits, &l->point_capacity, first + 1 + words, sizeof(uint64_t));
   uint64_t *mask = l->point_bits + first + 1;
   if (words > 0) memset(mask, 0, words * sizeof(uint64_t));
-  mark_within(p, x, -1, l->radius2, r, mask);
+  mark_within(p, x, -1, l->radius2, NULL, r, mask);
   for (hi = words; hi > 0 && !mask[hi - 1]; hi--) continue;
   while (lo < hi && !mask[lo]) lo++;
   if (lo > 0) memmove(mask, mask + lo, (size_t)(hi - lo) * sizeof(uint64_t));

@@ -29,6 +29,10 @@ void pass_for_each_owned(struct pass_ctx *ctx, particle_fn fluid, particle_fn wa
   }
 }
 
+_Static_assert(NLIST_MAX_PHASES >= CASE_MAX_PHASES, "the lists by phase hold every phase");
+
 void pass_neighbour_lists(struct pass_ctx *ctx) {
-  nlist_build(ctx->nl, ctx->space, ctx->p, ctx->prm->list_radius);
+  const struct physics_params *prm = ctx->prm;
+  nlist_build(ctx->nl, ctx->space, ctx->p, prm->list_radius, prm->multires ? prm->phase_list_radius : NULL,
+              ctx->c->n_phases);
 }

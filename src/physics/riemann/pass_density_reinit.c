@@ -1,5 +1,5 @@
 /* pass_density_reinit.c — density re-initialisation of scheme riemann, once per advection step
- * (paper 002 Eqs. 10-11, notes seed-002 section 1.5, single resolution):
+ * (paper 002 Eqs. 10-11, notes seed-002 sections 1.5 and A12):
  * (light: a gas phase, i.e. not `incompressible`, lighter than another phase; heavy: every other)
  *   heavy phase i (free-surface type, every other phase ignored: i's own phase and the walls):
  *     rho_sum = rho0_i (W(0) + sum_{j of i's phase or wall} W_ij) / sigma0,
@@ -7,14 +7,17 @@
  *   light phase i (internal-flow type, every neighbour counted):
  *     rho_i   = rho0_i (W(0) + sum_j W_ij) / sigma0,
  * rho* the density from the continuity equation, sigma0 the same sum on the undisturbed lattice
- * (self term included), and p from the phase's EOS. A neighbour counts as one lattice site: the
- * phases and the wall ghosts share the spacing dx (notes A12 with V0_j = V0_i). With one heavy phase
+ * (self term included), and p from the phase's EOS. A neighbour j counts as V0_j/V0_i lattice sites
+ * of i's (notes A12; V0 the lattice volume, (dx_ratio dx)^dim, dx^dim for a wall ghost) and its W_ij
+ * has the pair's kernel (riemann_pair_kernel); sigma0 is i's phase's sum with its own kernel on its
+ * own lattice. At single resolution every V0_j/V0_i is 1 and every kernel the same. With one heavy phase
  * this is the paper's Eq. 10; with several (liquid-liquid) each one's interface with another liquid
  * is treated as its interface with the light phase is, so the rows of two liquids placed on offset
  * lattices do not read as compression (doc/theory.md section 10). */
 #include <math.h>
 #include "physics/eos.h"
 #include "physics/passes.h"
+#include "physics/riemann.h"
 
 double lattice_kernel_sum(const struct kernel *k, double dx) {
   int n = (int)ceil(k->support / dx), dim = k->dim;
@@ -40,17 +43,20 @@ static void reinit_of(struct pass_ctx *ctx, long i, const struct neighbours *nb)
   struct parts *p = ctx->p;
   const int ph = p->phase[i], light = riemann_light_phase(ctx->c, ph);
   const struct phase *f = &ctx->c->phases[ph];
-  double sum = kernel_w(&ctx->prm->kern, 0.0);
+  const struct physics_params *prm = ctx->prm;
+  double sum = kernel_w(&prm->phase_kern[ph], 0.0);
   long n = 0;
   struct neighbours it = *nb;
   for (long j; neighbours_next(&it, &j);) {
-    if (!light && !part_has(p->phase[j], KIND_BOUNDARY) && p->phase[j] != ph) continue;
+    const int phj = p->phase[j];
+    if (!light && !part_has(phj, KIND_BOUNDARY) && phj != ph) continue;
+    const struct kernel *k = riemann_pair_kernel(prm, ph, phj);
     double dx[3], r2 = pair_separation(p, p->dim, i, j, dx);
-    if (r2 >= ctx->prm->kern.support2) continue;
-    sum += kernel_w(&ctx->prm->kern, r2);
+    if (r2 >= k->support2) continue;
+    sum += (phj >= 0 ? prm->phase_vol0[phj] : prm->vol0) / prm->phase_vol0[ph] * kernel_w(k, r2);
     n++;
   }
-  double rho_sum = f->rho0 * sum / ctx->prm->lattice_w_sum, rho = p->rho[i];
+  double rho_sum = f->rho0 * sum / prm->lattice_w_sum[ph], rho = p->rho[i];
   p->rho[i] = light ? rho_sum : rho_sum + fmax(0.0, rho - rho_sum) * f->rho0 / rho;
   p->p[i] = eos_pressure(f, p->rho[i]);
   ctx->out.pairs += n;

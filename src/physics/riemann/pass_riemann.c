@@ -19,8 +19,9 @@
  * Penalty (Eqs. 21-23 with the notes' A4, A5; light phases, physics.light_penalty k): a boundary
  * particle a (wall ghost or solid particle) with the unit normal n_a into the fluid (a ghost's mirror
  * direction, a solid's current normal) and beta = 2 (r_i - r_a).n_a / h <= 1 adds to du_i/dt
- *   -(2/rho_i) V_a Gamma n_a W'(r),  Gamma = k |p_i e_ia.n_a| (1 - beta)^2,
- * with no reaction (single resolution: h_S = h^chi = h).
+ *   -(2/rho_i) V_a Gamma n_a W'(r),  Gamma = k (h_S/h^chi) |p_i e_ia.n_a| (1 - beta)^2,
+ * with no reaction; h_S = h, and h^chi the pair's (h at single resolution, 2h for a light phase at
+ * dx_ratio 2). Multi-resolution: each pair has the kernel of riemann_pair_kernel.
  * Transport velocity (Eq. 12, light phases, notes A10): a_tv,i = -(2 p0_tv/rho_i) sum_j V_j grad_i W_ij. */
 #include <math.h>
 #include "physics/eos.h"
@@ -81,25 +82,27 @@ static inline void boundary_normal(const struct pass_ctx *ctx, long j, long g, d
 
 /* The penalty factor V_a Gamma_ia W'(r)/r (times n_a and -2/rho_i it is the acceleration) of boundary
  * particle j (g as for boundary_normal) for light particle i at dx = r_i - r_j, r = |dx|,
- * fv = V_a W'(r)/r; n_a into n. */
+ * fv = V_a W'(r)/r with the pair's kernel of smoothing length h_pair; n_a into n. */
 static inline double penalty_of(const struct pass_ctx *ctx, const struct rcentre *ci, long j, long g,
-                                const double *dx, double r, double fv, double *n, const int dim) {
+                                const double *dx, double r, double fv, double h_pair, double *n, const int dim) {
   double rn = 0;
   boundary_normal(ctx, j, g, n, dim);
   for (int d = 0; d < dim; d++) rn += dx[d] * n[d];
   double beta = 2.0 * rn / ctx->prm->h;
   if (beta > 1.0) return 0.0;
-  return ci->penalty * fabs(ci->p * rn / r) * (1.0 - beta) * (1.0 - beta) * fv * r;
+  return ci->penalty * (ctx->prm->h / h_pair) * fabs(ci->p * rn / r) * (1.0 - beta) * (1.0 - beta) * fv * r;
 }
 
 /* The Riemann sums of i: the momentum sums (pressure, viscous) when MOMENTUM, else the continuity
  * sum; with SOLIDS the solid particles among the neighbours are moving walls (and, with MOMENTUM,
- * take a load); dim is a compile-time constant of each specialisation. */
+ * take a load); with MULTIRES each pair has the kernel of riemann_pair_kernel; dim is a
+ * compile-time constant of each specialisation. */
 static inline __attribute__((always_inline)) void riemann_sums(const struct pass_ctx *ctx, const struct rcentre *ci,
                                                                const struct neighbours *nb, double *grad_p,
                                                                double *visc, double *drho, long *pairs,
                                                                const int dim, const int MOMENTUM,
-                                                               const int SOLIDS) {
+                                                               const int SOLIDS, const int MULTIRES) {
+  const struct physics_params *prm = ctx->prm;
   const struct parts *p = ctx->p;
   const struct phase *phases = ctx->c->phases;
   const double *restrict x[3] = {p->x[0], p->x[1], p->x[2]}, *restrict v[3] = {p->v[0], p->v[1], p->v[2]};
@@ -109,12 +112,14 @@ static inline __attribute__((always_inline)) void riemann_sums(const struct pass
   long n = 0;
   struct neighbours it = *nb;
   struct pair_chunk c;
-  while (pair_chunk_next(&it, &ctx->prm->kern, x, vol, ci->x, dim, CHUNK_F, &c))
+  const struct kernel *kchunk = &prm->chunk_kern[ci->phase], *kown = &prm->phase_kern[ci->phase];
+  while (pair_chunk_next(&it, kchunk, x, vol, ci->x, dim, CHUNK_F, &c))
     for (int k = 0; k < c.n; k++) {
       const long j = c.j[k];
       const double r2 = c.r2[k];
       double dx[3], vj[3] = {0, 0, 0}, vdx = 0;
-      if (r2 <= 0) continue;
+      const struct kernel *kp = MULTIRES ? riemann_pair_kernel(prm, ci->phase, phase[j]) : kown;
+      if (r2 <= 0 || (MULTIRES && r2 >= kp->support2)) continue;
       pair_chunk_dx(&c, k, dim, dx);
       n++;
       const int wall = part_has(phase[j], KIND_BOUNDARY), solid = SOLIDS && phase[j] == PHASE_SOLID;
@@ -132,8 +137,9 @@ static inline __attribute__((always_inline)) void riemann_sums(const struct pass
       }
       for (int d = 0; d < dim; d++) vdx += (ci->v[d] - vj[d]) * dx[d];
       /* the walls' volume is the lattice's, a solid particle's its own */
-      const double fv = wall && !solid ? kernel_f(&ctx->prm->kern, r2) * ctx->prm->vol0 : c.fv[k], r = sqrt(r2),
-                   zj = rhoj * cj;
+      const double fv = wall && !solid ? kernel_f(kp, r2) * prm->vol0
+                        : kp != kown ? kernel_f(kp, r2) * vol[j] : c.fv[k],
+                   r = sqrt(r2), zj = rhoj * cj;
       if (MOMENTUM) {
         double pstar = riemann_pressure(ci->z, ci->p, zj, pj, -vdx / r, (ci->z + zj) / (ci->rho + rhoj));
         double eta = harmonic_mean(ci->eta, etaj), dv_pair[3] = {0, 0, 0};
@@ -144,7 +150,7 @@ static inline __attribute__((always_inline)) void riemann_sums(const struct pass
         }
         if (solid) body_load_append(ctx->solid_loads, p, ci->i, (int)g, LOAD_PAIRS, dv_pair);
         if (wall && ci->penalty > 0) {
-          double n[3], pen = penalty_of(ctx, ci, j, g, dx, r, fv, n, dim);
+          double n[3], pen = penalty_of(ctx, ci, j, g, dx, r, fv, kp->h, n, dim);
           for (int d = 0; d < dim; d++) gp[d] += pen * n[d];   /* -(2/rho_i) pen n: as a pressure term */
         }
       } else {
@@ -179,22 +185,31 @@ static void centre_of(const struct pass_ctx *ctx, long i, struct rcentre *ci) {
   ci->penalty = ctx->prm->light_penalty[ci->phase];
 }
 
-/* The sums of i in the specialisation for the dimension. */
+typedef void (*sums_fn)(const struct pass_ctx *ctx, const struct rcentre *ci, const struct neighbours *nb,
+                        double *grad_p, double *visc, double *drho, long *pairs);
+
+/* One specialisation of riemann_sums: dimension D, momentum M, solids S, multi-resolution R. */
+#define SUMS_SPECIALISED(D, M, S, R)                                                                          \
+  static void sums_##D##M##S##R(const struct pass_ctx *ctx, const struct rcentre *ci, const struct neighbours *nb, \
+                                double *grad_p, double *visc, double *drho, long *pairs) {                     \
+    riemann_sums(ctx, ci, nb, grad_p, visc, drho, pairs, D, M, S, R);                                          \
+  }
+#define SUMS_OVER_R(D, M, S) SUMS_SPECIALISED(D, M, S, 0) SUMS_SPECIALISED(D, M, S, 1)
+#define SUMS_OVER_S(D, M) SUMS_OVER_R(D, M, 0) SUMS_OVER_R(D, M, 1)
+#define SUMS_OVER_M(D) SUMS_OVER_S(D, 0) SUMS_OVER_S(D, 1)
+SUMS_OVER_M(2)
+SUMS_OVER_M(3)
+
+/* The specialisations by [dim == 3][momentum][solids][multi-resolution]. */
+static const sums_fn SUMS[2][2][2][2] = {
+    {{{sums_2000, sums_2001}, {sums_2010, sums_2011}}, {{sums_2100, sums_2101}, {sums_2110, sums_2111}}},
+    {{{sums_3000, sums_3001}, {sums_3010, sums_3011}}, {{sums_3100, sums_3101}, {sums_3110, sums_3111}}}};
+
+/* The sums of i in the specialisation for the dimension, the pass, the solids and the resolution. */
 static void sums_of(struct pass_ctx *ctx, const struct rcentre *ci, const struct neighbours *nb, double *grad_p,
                     double *visc, double *drho, int momentum) {
-  long *pairs = &ctx->out.pairs;
-  if (ctx->solids) {
-    if (ctx->p->dim == 2) momentum ? riemann_sums(ctx, ci, nb, grad_p, visc, drho, pairs, 2, 1, 1)
-                                : riemann_sums(ctx, ci, nb, grad_p, visc, drho, pairs, 2, 0, 1);
-    else momentum ? riemann_sums(ctx, ci, nb, grad_p, visc, drho, pairs, 3, 1, 1)
-                  : riemann_sums(ctx, ci, nb, grad_p, visc, drho, pairs, 3, 0, 1);
-  } else if (ctx->p->dim == 2) {
-    momentum ? riemann_sums(ctx, ci, nb, grad_p, visc, drho, pairs, 2, 1, 0)
-             : riemann_sums(ctx, ci, nb, grad_p, visc, drho, pairs, 2, 0, 0);
-  } else {
-    momentum ? riemann_sums(ctx, ci, nb, grad_p, visc, drho, pairs, 3, 1, 0)
-             : riemann_sums(ctx, ci, nb, grad_p, visc, drho, pairs, 3, 0, 0);
-  }
+  SUMS[ctx->p->dim == 3][momentum != 0][ctx->solids != NULL][ctx->prm->multires != 0](ctx, ci, nb, grad_p, visc,
+                                                                                      drho, &ctx->out.pairs);
 }
 
 /* du/dt of fluid particle i. */
@@ -225,15 +240,24 @@ static void transport_of(struct pass_ctx *ctx, long i, const struct neighbours *
   const int dim = p->dim;
   double s[3] = {0, 0, 0}, xi[3];
   if (riemann_light_phase(ctx->c, p->phase[i])) {
+    const struct physics_params *prm = ctx->prm;
+    const int ph = p->phase[i];
+    const struct kernel *kchunk = &prm->chunk_kern[ph], *kown = &prm->phase_kern[ph];
     const double *x[3];
     pair_chunk_centre(p, i, x, xi);
     struct neighbours it = *nb;
     struct pair_chunk c;
-    while (pair_chunk_next(&it, &ctx->prm->kern, x, ctx->w->vol, xi, dim, CHUNK_F, &c)) {
-      for (int k = 0; k < c.n; k++)
-        for (int d = 0; d < dim; d++) s[d] += c.fv[k] * c.dx[d][k];
-      ctx->out.pairs += c.n;
-    }
+    while (pair_chunk_next(&it, kchunk, x, ctx->w->vol, xi, dim, CHUNK_F, &c))
+      for (int k = 0; k < c.n; k++) {
+        double fv = c.fv[k];
+        if (prm->multires) {   /* the pair's kernel, when it is not the chunk's */
+          const struct kernel *kp = riemann_pair_kernel(prm, ph, p->phase[c.j[k]]);
+          if (c.r2[k] >= kp->support2) continue;
+          fv = kp == kown ? fv : kernel_f(kp, c.r2[k]) * ctx->w->vol[c.j[k]];
+        }
+        for (int d = 0; d < dim; d++) s[d] += fv * c.dx[d][k];
+        ctx->out.pairs++;
+      }
   }
   for (int d = 0; d < dim; d++) ctx->w->dv[d][i] = -2.0 * ctx->prm->tv_pressure * s[d] / p->rho[i];
 }
