@@ -97,9 +97,10 @@ static int multires_refused(const struct case_def *c, char *err, size_t len) {
     if (c->phases[ph].dx_ratio > 1 && !riemann_light_phase(c, ph))
       return snprintf(err, len, "%s: phases.%d.dx_ratio: only a light phase (a gas lighter than another phase) "
                       "may be coarser (paper 002's multi-resolution)", c->source_file, ph), 1;
-  if (case_max_dx_ratio(c) > 1 && c->surface_tension > 0)
+  int coarse = coarse_phase(c);
+  if (coarse >= 0 && c->surface_tension > 0)
     return snprintf(err, len, "%s: physics.surface_tension: not available with multi-resolution (phases.%d.dx_ratio "
-                    "> 1) in this version", c->source_file, coarse_phase(c)), 1;
+                    "> 1) in this version", c->source_file, coarse), 1;
   for (int k = 0; k < c->n_probes; k++)
     if (c->probes[k].kind == PROBE_ELEVATION && c->phases[c->probes[k].phase].dx_ratio > 1)
       return snprintf(err, len, "%s: probes.%d: a wave gauge of a phase with dx_ratio > 1 is not available in this "

@@ -232,17 +232,18 @@ static int number_and_generate(struct engine *e, const struct init_rows *rows, c
  * the next region). */
 static void warn_coarse_misfit(const struct engine *e) {
   const struct case_def *c = e->c;
-  for (int k = 0; k < c->n_fluids && e->rank == 0; k++) {
+  if (e->rank != 0) return;
+  for (int k = 0; k < c->n_fluids; k++) {
     const struct shape *s = &c->fluids[k].shape;
     double dx = case_phase_dx(c, c->fluids[k].phase);
-    for (int d = 0; d < c->dimension && s->kind == SHAPE_BOX && dx > c->dx; d++) {
+    if (s->kind != SHAPE_BOX || dx == c->dx) continue;
+    for (int d = 0; d < c->dimension; d++) {
       double n = (s->max[d] - s->min[d]) / dx;
-      if (fabs(n - round(n)) > 1e-6 * n) {
-        fprintf(stderr, "mpsph: warning: fluids.%d (phase %s at %g m): its box is %g spacings wide along axis %d, "
-                "not a whole number: its last row stands off the box's upper face\n", k,
-                c->phases[c->fluids[k].phase].name, dx, n, d);
-        break;
-      }
+      if (fabs(n - round(n)) <= 1e-6 * n) continue;
+      fprintf(stderr, "mpsph: warning: fluids.%d (phase %s at %g m): its box is %g spacings wide along axis %d, "
+              "not a whole number: its last row stands off the box's upper face\n", k,
+              c->phases[c->fluids[k].phase].name, dx, n, d);
+      break;
     }
   }
 }

@@ -93,6 +93,13 @@ static inline double penalty_of(const struct pass_ctx *ctx, const struct rcentre
   return ci->penalty * (ctx->prm->h / h_pair) * fabs(ci->p * rn / r) * (1.0 - beta) * (1.0 - beta) * fv * r;
 }
 
+/* The factor F(r) V_j of a pair of kernel kp at r^2 = r2 whose chunk was filled with kown: the
+ * chunk's fv when they are the same kernel, else F of kp times the neighbour's volume vol_j. */
+static inline double pair_factor(const struct kernel *kp, const struct kernel *kown, double r2, double fv,
+                                 double vol_j) {
+  return kp == kown ? fv : kernel_f(kp, r2) * vol_j;
+}
+
 /* The Riemann sums of i: the momentum sums (pressure, viscous) when MOMENTUM, else the continuity
  * sum; with SOLIDS the solid particles among the neighbours are moving walls (and, with MOMENTUM,
  * take a load); with MULTIRES each pair has the kernel of riemann_pair_kernel; dim is a
@@ -137,8 +144,7 @@ static inline __attribute__((always_inline)) void riemann_sums(const struct pass
       }
       for (int d = 0; d < dim; d++) vdx += (ci->v[d] - vj[d]) * dx[d];
       /* the walls' volume is the lattice's, a solid particle's its own */
-      const double fv = wall && !solid ? kernel_f(kp, r2) * prm->vol0
-                        : kp != kown ? kernel_f(kp, r2) * vol[j] : c.fv[k],
+      const double fv = wall && !solid ? kernel_f(kp, r2) * prm->vol0 : pair_factor(kp, kown, r2, c.fv[k], vol[j]),
                    r = sqrt(r2), zj = rhoj * cj;
       if (MOMENTUM) {
         double pstar = riemann_pressure(ci->z, ci->p, zj, pj, -vdx / r, (ci->z + zj) / (ci->rho + rhoj));
@@ -253,7 +259,7 @@ static void transport_of(struct pass_ctx *ctx, long i, const struct neighbours *
         if (prm->multires) {   /* the pair's kernel, when it is not the chunk's */
           const struct kernel *kp = riemann_pair_kernel(prm, ph, p->phase[c.j[k]]);
           if (c.r2[k] >= kp->support2) continue;
-          fv = kp == kown ? fv : kernel_f(kp, c.r2[k]) * ctx->w->vol[c.j[k]];
+          fv = pair_factor(kp, kown, c.r2[k], fv, ctx->w->vol[c.j[k]]);
         }
         for (int d = 0; d < dim; d++) s[d] += fv * c.dx[d][k];
         ctx->out.pairs++;
