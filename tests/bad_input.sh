@@ -91,11 +91,13 @@ refuses ivisc-gd 'physics\.interface_viscosity: none is not available with schem
   run ivisc-gd --set scheme=generalized-dissipation --set physics.interface_viscosity=none
 refuses ivisc-value 'physics\.interface_viscosity: got .arithmetic., allowed values: none, harmonic' -- \
   run ivisc-value --set physics.interface_viscosity=arithmetic
-# Elastic solids (the gate case): scheme riemann only, their keys, a solid the elastic module
-# cannot set up, a fluid region over a solid.
+# Elastic solids (the gate case): schemes riemann and delta-plus only, their keys, a solid the
+# elastic module cannot set up, a fluid region over a solid.
 gate=cases/elastic-gate-antoci/case.yaml
-refuses solid-scheme 'solids: elastic solids are not available with scheme delta-plus' -- \
-  build/mpsph run "$gate" -o "$tmp/solid-scheme" --set scheme=delta-plus
+refuses solid-scheme 'solids: elastic solids are not available with scheme delta-sph' -- \
+  build/mpsph run "$gate" -o "$tmp/solid-scheme" --set scheme=delta-sph
+refuses solid-scheme-gd 'solids: elastic solids are not available with scheme generalized-dissipation' -- \
+  build/mpsph run "$gate" -o "$tmp/solid-scheme-gd" --set scheme=generalized-dissipation
 refuses solid-poisson 'solids\.0\.poisson_ratio: got 0\.5, expected a number > -1 and < 0\.5' -- \
   build/mpsph run "$gate" -o "$tmp/solid-poisson" --set solids.0.poisson_ratio=0.5
 sed 's/, clamp_max: \[[^]]*\]//' "$gate" > "$tmp/one-corner.yaml"

@@ -85,7 +85,7 @@ struct engine {
   long n_repartitions, last_repartition_step;
   double t_compute;                /* this rank's pass time since the last balance check [s] */
   double t_migrate, t_output;      /* accumulated [s] */
-  double t_solids;                 /* in solids_advance (loads, sub-steps, copies), accumulated [s] */
+  double t_solids;                 /* in the solids' coupling (loads, sub-steps, copies), accumulated [s] */
   double t_repartition;            /* in re-partitions after start-up, accumulated [s] */
   double t_dropped_ops;            /* time of operations dropped from the pipeline by a re-assembly [s] */
   double t_steps;                  /* wall time of the step loop without the final output [s] */

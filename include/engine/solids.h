@@ -1,11 +1,14 @@
-/* solids.h — the elastic solids of a run (scheme riemann; notes seed-002 §1.7, §1.10, §1.13).
+/* solids.h — the elastic solids of a run (schemes riemann and delta-plus; notes seed-002 §1.7,
+ * §1.10, §1.13).
  * Each solid is replicated on every rank (physics/elastic_solid.h) and advanced alike on all of
  * them; its particles also sit among the fluid's (kind KIND_SOLID, ids after the fluid and wall
  * particles), owned by the rank of their cell and in the halos like any particle, so that the
- * fluid's pair loops see them as moving walls. After each acoustic sub-step the pair forces the
- * fluid's momentum pass recorded (loads) are gathered from every rank, summed per solid particle
- * in the fluid particles' id order (the same sums on every rank, whatever the partition), held
- * over the solid's sub-steps of that fluid sub-step, and the particles' copies take the new state. */
+ * fluid's pair loops see them as moving walls. The pair forces the fluid's momentum pass recorded
+ * (loads) are gathered from every rank and summed per solid particle in the fluid particles' id
+ * order (the same sums on every rank, whatever the partition): with riemann after each acoustic
+ * sub-step, with delta-plus after each RK stage, weighted as the stage's derivatives are. They are
+ * held over the solid's sub-steps of that fluid sub-step (riemann) or step (delta-plus), and then
+ * the particles' copies take the new state. */
 #ifndef MPSPH_SOLIDS_H
 #define MPSPH_SOLIDS_H
 
@@ -42,8 +45,8 @@ struct solids {
   double *v_avg, *acc_avg, *normal;   /* every solid's, concatenated (dim per particle) */
   struct body_loads loads;    /* appended by the momentum pass on this rank */
   struct load_gather gather;
-  long substeps;              /* solid sub-steps of the last fluid sub-step (largest over solids) */
-  long substeps_total, advances;   /* sums of substeps and the count of solids_advance calls */
+  long substeps;              /* solid sub-steps of the last solids_move (largest over solids) */
+  long substeps_total, advances;   /* sums of substeps and the count of solids_move calls */
 };
 
 struct engine;
@@ -57,10 +60,19 @@ int solids_init(struct engine *e);
  *  message (a solid particle outside the domain). */
 int solids_add_particles(struct engine *e);
 
-/** After an acoustic sub-step of dt [s]: gather and sum the loads, advance every solid over dt
- *  under gravity and the loads, and give the solid particles' copies (owned and halo) the new
- *  position, velocity v_avg, density rho0/J and pressure -tr(sigma)/dim. Returns 0, or 2 on every
- *  rank (with a message on rank 0) if a solid's state is not finite. Collective. */
+/** Gather the loads the pair passes appended on every rank, sum them per solid particle (in the
+ *  order of load_sum.h) and add weight times them to the loads the solids hold (acc_ext, and each
+ *  solid's total force), which are first set to 0 when `first`. Collective. */
+void solids_take_loads(struct engine *e, double weight, int first);
+
+/** Advance every solid over dt [s] under gravity and the loads it holds, and give the solid
+ *  particles' copies (owned and halo) the new position, velocity v_avg, density rho0/J and
+ *  pressure -tr(sigma)/dim. Returns 0, or 2 on every rank (with a message on rank 0) if a solid's
+ *  state is not finite. Collective. */
+int solids_move(struct engine *e, double dt);
+
+/** After an acoustic sub-step of dt [s] (scheme riemann): solids_take_loads with weight 1, then
+ *  solids_move over dt. Returns as solids_move. Collective. */
 int solids_advance(struct engine *e, double dt);
 
 /** The checkpoint arrays of the solids into v (named pointers to their state: what a continuation

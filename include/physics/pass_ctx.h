@@ -5,6 +5,7 @@
 #ifndef MPSPH_PASS_CTX_H
 #define MPSPH_PASS_CTX_H
 
+#include <math.h>
 #include <stdint.h>
 #include "base/parts.h"
 #include "case/case.h"
@@ -72,11 +73,24 @@ void body_load_append(struct body_loads *l, const struct parts *p, long i, int w
 struct solid_view {
   int64_t id0;
   long n;
-  const double *v;                 /* velocity averaged over the last fluid sub-step, dim per
-                                      particle (the wall velocity the fluid sees) [m/s] */
-  const double *a;                 /* the change of that average over the sub-step / its length [m/s^2] */
+  const double *v;                 /* velocity averaged over the last fluid sub-step (riemann) or
+                                      step (delta-plus), dim per particle (the wall velocity the
+                                      fluid sees) [m/s] */
+  const double *a;                 /* the change of that average over the (sub-)step / its length [m/s^2] */
   const double *normal;            /* current unit surface normal, dim per particle (0 deep inside) [-] */
 };
+
+/** The one-sided dummy pressure [Pa] that particle g of the solid view s shows a fluid particle i
+ *  of pressure p_i [Pa], density rho_i [kg/m^3] and body acceleration a_i (g + f_potential)
+ *  [m/s^2] at dx = r_i - r_g [m] (paper 002 Eq. P-18 with the notes' A2, A3):
+ *  p_i + rho_i max(0, (a_i - a~_g).(r_g - r_i)). */
+static inline double solid_dummy_pressure(const struct solid_view *s, long g, double p_i, double rho_i,
+                                          const double *a_i, const double *dx, const int dim) {
+  const double *as = s->a + g * dim;
+  double head = 0;
+  for (int d = 0; d < dim; d++) head -= (a_i[d] - as[d]) * dx[d];
+  return p_i + rho_i * fmax(0.0, head);
+}
 
 /** Work arrays of the scheme, sized to the particle capacity (those read at halo slots) or to
  *  the owned particles (the RK4 state and sums, the derivatives, the free-surface region and

@@ -1499,7 +1499,7 @@ static const struct case_key CASE_KEYS[] = {
              .doc = "regions filled with particles, in this order (section 2.2)"),
     CASE_KEY("", "walls", KEY_LIST, n_walls, .list = &WALLS, .doc = "walls of ghost particles (section 2.2)"),
     CASE_KEY("", "solids", KEY_LIST, n_solids, .list = &SOLIDS,
-             .doc = "elastic solids, scheme riemann only (section 2.2)"),
+             .doc = "elastic solids, schemes riemann and delta-plus (section 2.2)"),
     CASE_KEY("physics", "delta", KEY_NUMBER, delta, .rule = &R_NONNEGATIVE, .computed = delta_default,
              .def_doc = "`0.1` (`0.5` with generalized-dissipation)", .doc = "δ of the density diffusion [-]"),
     CASE_KEY("physics", "artificial_viscosity", KEY_NUMBER, alpha, .rule = &R_NONNEGATIVE,

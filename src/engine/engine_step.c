@@ -398,8 +398,8 @@ static double wall_speed2(const struct engine *e, long i) {
   return u2;
 }
 
-/* Global maxima of the acceleration and of the advection speed |u + du| [m/s^2, m/s], and the
- * minimum density per phase, from the first stage. */
+/* Global maxima of the acceleration and of the advection speed |u + du| (and the moving walls' and
+ * solids' speeds) [m/s^2, m/s], and the minimum density per phase, from the first stage. */
 static void reduce_first_stage(struct engine *e, double *a_max, double *adv_max) {
   const struct parts *p = &e->p;
   int np = e->c->n_phases;
@@ -422,7 +422,7 @@ static void reduce_first_stage(struct engine *e, double *a_max, double *adv_max)
   MPI_Allreduce(MPI_IN_PLACE, max2, 2, MPI_DOUBLE, MPI_MAX, e->comm);
   MPI_Allreduce(MPI_IN_PLACE, e->prm.rho_min, np, MPI_DOUBLE, MPI_MIN, e->comm);
   *a_max = sqrt(max2[0]);
-  *adv_max = sqrt(max2[1]);
+  *adv_max = e->solids.n ? fmax(sqrt(max2[1]), solids_max_speed(e)) : sqrt(max2[1]);
 }
 
 /* The stable sound speed of Eq. 12 for every liquid/gas pair present:
@@ -568,6 +568,18 @@ static void rk_update(struct engine *e, const struct rk_scheme *rk, int s, const
 
 int engine_step(struct engine *e) { return scheme_of(e->c->scheme)->step(e); }
 
+/* The elastic solids' part of stage s (doc/theory.md section 14): the loads of the stage with its
+ * weight in the step's update, and after the last stage the solids' advance over the step, under
+ * the loads so averaged. Returns 0 or 2. */
+static int solids_stage(struct engine *e, const struct rk_scheme *rk, int s) {
+  if (!e->solids.n) return 0;
+  double t0 = MPI_Wtime();
+  solids_take_loads(e, rk->weight[s] / rk->divisor, s == 0);
+  int status = s == rk->stages - 1 ? solids_move(e, e->dt) : 0;
+  e->t_solids += MPI_Wtime() - t0;
+  return status;
+}
+
 int engine_step_rk(struct engine *e) {
   const struct rk_scheme *rk = (e->prm.features & FEAT_SAME_PHASE_CONTINUITY) ? &MIDPOINT_PC : &RK4;
   struct frame start[CASE_MAX_WALLS];
@@ -591,6 +603,7 @@ int engine_step_rk(struct engine *e) {
       e->dt = fmin(e->dt, e->c->t_end - e->time);
     }
     rk_update(e, rk, s, start);
+    if (solids_stage(e, rk, s)) return 2;
   }
   wall_frames(e, e->time + e->dt, e->prm.frames);   /* the walls where the step ends (for the checks
                                                        and probes between steps) */

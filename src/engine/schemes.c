@@ -77,16 +77,25 @@ static int coarse_phase(const struct case_def *c) {
   return -1;
 }
 
-/* Elastic solids and multi-resolution are in scheme riemann's pair terms only: the others refuse
- * them. Returns 0 or 1. */
-static int riemann_only_refused(const struct case_def *c, const char *scheme, char *err, size_t len) {
+/* Multi-resolution is in scheme riemann's pair terms only: the others refuse it. Returns 0 or 1. */
+static int coarse_refused(const struct case_def *c, const char *scheme, char *err, size_t len) {
   int ph = coarse_phase(c);
-  if (ph >= 0)
-    return snprintf(err, len, "%s: phases.%d.dx_ratio: multi-resolution is not available with scheme %s in this "
-                    "version (scheme riemann has it)", c->source_file, ph, scheme), 1;
+  if (ph < 0) return 0;
+  return snprintf(err, len, "%s: phases.%d.dx_ratio: multi-resolution is not available with scheme %s in this "
+                  "version (scheme riemann has it)", c->source_file, ph, scheme), 1;
+}
+
+/* Elastic solids are in the pair terms of schemes riemann and delta-plus only: the others refuse
+ * them. Returns 0 or 1. */
+static int solids_refused(const struct case_def *c, const char *scheme, char *err, size_t len) {
   if (!c->n_solids) return 0;
   return snprintf(err, len, "%s: solids: elastic solids are not available with scheme %s in this version "
-                  "(scheme riemann has them)", c->source_file, scheme), 1;
+                  "(schemes riemann and delta-plus have them)", c->source_file, scheme), 1;
+}
+
+/* Neither multi-resolution nor elastic solids. Returns 0 or 1. */
+static int multires_or_solids_refused(const struct case_def *c, const char *scheme, char *err, size_t len) {
+  return coarse_refused(c, scheme, err, len) || solids_refused(c, scheme, err, len);
 }
 
 /* Scheme riemann's multi-resolution: a coarser phase must be a light one (paper 002: h_L >= h_H),
@@ -108,9 +117,11 @@ static int multires_refused(const struct case_def *c, char *err, size_t len) {
   return 0;
 }
 
-/* Schemes delta-plus and delta-sph refuse the solids. */
+/* Scheme delta-plus has the elastic solids (its fluid rhs pass, doc/theory.md section 14) but not
+ * the multi-resolution; delta-sph has neither. */
 static int delta_refused(const struct case_def *c, char *err, size_t len) {
-  return riemann_only_refused(c, c->scheme == SCHEME_DELTA_SPH ? "delta-sph" : "delta-plus", err, len);
+  if (c->scheme == SCHEME_DELTA_SPH) return multires_or_solids_refused(c, "delta-sph", err, len);
+  return coarse_refused(c, "delta-plus", err, len);
 }
 
 /* The options of paper 000 that schemes same-phase-continuity and generalized-dissipation do not
@@ -134,7 +145,8 @@ static int delta_plus_option(const struct case_def *c) {
 static int same_phase_terms(const struct case_def *c, char *err, size_t len) {
   int k = delta_plus_option(c);
   if (coupled_viscosity_refused(c, "same-phase-continuity", "paper 003 Eq. 21 with the harmonic mean", err, len) ||
-      bodies_refused(c, "same-phase-continuity", err, len) || riemann_only_refused(c, "same-phase-continuity", err, len))
+      bodies_refused(c, "same-phase-continuity", err, len) ||
+      multires_or_solids_refused(c, "same-phase-continuity", err, len))
     return 1;
   if (k < 0) return 0;
   snprintf(err, len, "%s: physics.%s: only %s with scheme same-phase-continuity (paper 003 has no such term)",
@@ -149,7 +161,7 @@ static int gd_unsupported(const struct case_def *c, char *err, size_t len) {
   int k = delta_plus_option(c);
   if (coupled_viscosity_refused(c, "generalized-dissipation", "paper 004 Eq. 10", err, len) ||
       bodies_refused(c, "generalized-dissipation", err, len) ||
-      riemann_only_refused(c, "generalized-dissipation", err, len))
+      multires_or_solids_refused(c, "generalized-dissipation", err, len))
     return 1;
   if (k < 0) return 0;
   snprintf(err, len, "%s: physics.%s: not part of scheme generalized-dissipation (use none, false, 0 or sum)",

@@ -1,5 +1,6 @@
 /* solids.c — the elastic solids of a run (engine/solids.h): set-up from the case, their particles
- * among the fluid's, the coupling after each acoustic sub-step, solids.csv. */
+ * among the fluid's, the coupling (the loads taken, the solids moved over a fluid sub-step of
+ * riemann or a step of delta-plus), solids.csv. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -208,22 +209,22 @@ int solids_add_particles(struct engine *e) {
   return 0;
 }
 
-/* The gathered loads summed per solid particle into each solid's acc_ext (force / mass) and its
- * total force. */
-static void sum_loads(struct engine *e) {
+void solids_take_loads(struct engine *e, double weight, int first) {
   struct solids *S = &e->solids;
   const int dim = e->c->dimension;
   long total = load_gather_all(&S->gather, &S->loads, e->comm), at = 0;
   const struct body_load *all = S->gather.all;
   for (int k = 0; k < S->n; k++) {
     struct solid_run *r = &S->run[k];
-    memset(r->force, 0, sizeof r->force);
-    memset(r->s.acc_ext, 0, (size_t)r->s.n * dim * sizeof(double));
+    if (first) {
+      memset(r->force, 0, sizeof r->force);
+      memset(r->s.acc_ext, 0, (size_t)r->s.n * dim * sizeof(double));
+    }
     for (; at < total && all[at].wall < r->first + r->s.n; at++) {
       double *acc = r->s.acc_ext + (size_t)(all[at].wall - r->first) * dim;
       for (int d = 0; d < dim; d++) {
-        acc[d] += all[at].force[d] / r->s.mass;
-        r->force[d] += all[at].force[d];
+        acc[d] += weight * all[at].force[d] / r->s.mass;
+        r->force[d] += weight * all[at].force[d];
       }
     }
   }
@@ -242,10 +243,9 @@ static void update_copies(struct engine *e) {
   }
 }
 
-int solids_advance(struct engine *e, double dt) {
+int solids_move(struct engine *e, double dt) {
   struct solids *S = &e->solids;
   const int dim = e->c->dimension;
-  sum_loads(e);
   S->substeps = 0;
   for (int k = 0; k < S->n; k++) {
     struct solid_run *r = &S->run[k];
@@ -264,6 +264,11 @@ int solids_advance(struct engine *e, double dt) {
   S->substeps_total += S->substeps;
   S->advances++;
   return 0;
+}
+
+int solids_advance(struct engine *e, double dt) {
+  solids_take_loads(e, 1.0, 1);
+  return solids_move(e, dt);
 }
 
 /* The Cauchy stress of particle a of s in 3D (its deformation gradient with F_zz = 1 in 2D: plane

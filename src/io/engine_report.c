@@ -89,7 +89,7 @@ struct run_summary {
   long steps;
   double loop_seconds, n_fluid, n_wall;
   double op_max[ENGINE_MAX_OPS], op_mean[ENGINE_MAX_OPS], op_pairs[ENGINE_MAX_OPS];
-  double solids_max, solids_mean;  /* in solids_advance [s] */
+  double solids_max, solids_mean;  /* in the solids' coupling [s] */
   double migrate_max, migrate_mean, output_max, steps_max, dropped_max, dropped_mean, cpu_max, cpu_mean;
   double *per_rank;                /* PER_RANK figures of each rank; rank 0 only */
   double mem_sum[N_MEM];           /* the project's arrays by owner, summed over the ranks [bytes] */
@@ -208,7 +208,7 @@ static void print_summary(const struct engine *e, const struct run_summary *s) {
   for (int k = 0; k < e->n_ops; k++) printf("  %6.2f s  %s\n", s->op_max[k], e->ops[k].name);
   printf("  %6.2f s  migration, sort, halo rebuild (%ld re-partitions)\n", s->migrate_max, e->n_repartitions);
   if (e->solids.n)
-    printf("  %6.2f s  elastic solids: loads, %ld sub-steps (%.1f per fluid sub-step), particle copies\n",
+    printf("  %6.2f s  elastic solids: loads, %ld sub-steps (%.1f per fluid (sub-)step), particle copies\n",
            s->solids_max, e->solids.substeps_total,
            (double)e->solids.substeps_total / (double)(e->solids.advances ? e->solids.advances : 1));
   printf("  %6.2f s  output\n", e->t_output);

@@ -15,7 +15,11 @@
  * K_i = alpha h c0 rho0 + 2(dim+2) mu, mu_ij = 2 mu_i mu_j/(mu_i + mu_j), s_i = -1 (tensile control: p_i < 0 outside the free-surface
  * region) else +1, D = <div u>. eps/phi: interface.c.
  * The terms a case does not use are compiled out of its loop (see dispatch()). With rigid bodies,
- * the same sums over the ghosts of each body alone (pressure pairs symmetric) give the body loads. */
+ * the same sums over the ghosts of each body alone (pressure pairs symmetric) give the body loads.
+ * A particle a of an elastic solid is a moving wall (doc/theory.md section 14): p_a the one-sided
+ * dummy pressure of solid_dummy_pressure (paper 002 Eq. P-18), its velocity v~_a and volume m_a/rho_a
+ * as they are, and the pair's pressure (p_a + p_i, symmetric) and viscous force on i, times -m_i, a
+ * load on a. */
 #include <math.h>
 #include "physics/interface.h"
 #include "physics/pair_chunk.h"
@@ -26,6 +30,7 @@ struct centre {
   long i;
   int phase;
   double p_sign;                        /* +1, or -1 under tensile control */
+  double a[3];                          /* g + f_potential at i [m/s^2] */
 };
 
 /* Sums over the neighbours of fluid particle i. */
@@ -40,6 +45,26 @@ static inline double other_phase_pressure(double pi, double rhoi, double pj, dou
   return ((rhoj - rhoi) * pi + 2.0 * rhoi * pj) / (rhoi + rhoj);
 }
 
+/* K_i = alpha h c0 rho0 + 2(dim+2) mu of phase ph: the viscous pair terms' factor [Pa s]. */
+static double viscous_coefficient(const struct pass_ctx *ctx, int ph) {
+  const struct phase *f = &ctx->c->phases[ph];
+  return ctx->c->alpha * ctx->prm->h * f->c0 * f->rho0 + 2.0 * (ctx->p->dim + 2) * f->viscosity;
+}
+
+/* The load on solid particle g (its index in the solid view) of its pair with fluid particle i
+ * (ci): the reaction of the pair's force on i, its pressure term with psum = p_g + p_i, its viscous
+ * term with pi_ij (0 without viscosity) and its damper term with d_damp (D_i with the symmetric
+ * damper, else 0); fv dx = grad_i W_ig V_g. */
+static void solid_load(const struct pass_ctx *ctx, const struct centre *ci, long g, double psum, double pi_ij,
+                       double d_damp, double fv, const double *dx) {
+  const struct parts *p = ctx->p;
+  const double k_visc = viscous_coefficient(ctx, ci->phase), rho_i = p->rho[ci->i];
+  const double k_damp = ctx->prm->damper_coef[1 + ci->phase];
+  double dv[3] = {0, 0, 0};
+  for (int d = 0; d < p->dim; d++) dv[d] = (k_visc * pi_ij - psum) * fv * dx[d] / rho_i + k_damp * d_damp * fv * dx[d];
+  body_load_append(ctx->solid_loads, p, ci->i, (int)g, LOAD_PAIRS, dv);
+}
+
 /* The terms of a case's loop: du (delta-u), damp (acoustic damper: 1 symmetric, 2 difference
  * form), phases (0: one fluid phase, so no pair is of the other-phase relation; 1: several
  * phases; 2: several phases with the sharpness force), diss (bit 1: viscosity, bit 2: density
@@ -48,18 +73,20 @@ struct terms {
   int du, damp, phases, diss;
 };
 
-/* Loop over the neighbours of i (with BODY_WALL >= 0 over the ghosts of that wall only); the
- * terms DU, DAMP, PHASES, DISS (struct terms) and the dimension are compile-time constants in
- * each specialisation, so that a term that is off has its pair terms compiled out. The sums are
- * accumulated in locals and the arrays read through restrict pointers, so that nothing goes
- * through memory inside the loop. */
+/* Loop over the neighbours of i (with BODY_WALL >= 0 over the ghosts of that wall only; with SOLIDS
+ * the solid particles among them are moving walls and take a load); the terms DU, DAMP, PHASES,
+ * DISS (struct terms), SOLIDS and the dimension are compile-time constants in each specialisation,
+ * so that a term that is off has its pair terms compiled out. The sums are accumulated in locals
+ * and the arrays read through restrict pointers, so that nothing goes through memory inside the
+ * loop. */
 static inline __attribute__((always_inline)) void fluid_sums(const struct pass_ctx *ctx,
                                                              const struct centre *ci,
                                                              const struct neighbours *nb,
                                                              struct fluid_sums *out, long *pairs,
                                                              const int dim, const int DU,
                                                              const int DAMP, const int PHASES,
-                                                             const int DISS, const int BODY_WALL) {
+                                                             const int DISS, const int BODY_WALL,
+                                                             const int SOLIDS) {
   const struct parts *p = ctx->p;
   const struct work *w = ctx->w;
   const double *restrict x[3] = {p->x[0], p->x[1], p->x[2]}, *restrict v[3] = {p->v[0], p->v[1], p->v[2]};
@@ -78,6 +105,7 @@ static inline __attribute__((always_inline)) void fluid_sums(const struct pass_c
   const int weighted = PHASES && ctx->c->interface_pressure == IFACE_P_DENSITY_WEIGHTED;
   const int visc_other = PHASES && visc && ctx->c->interface_viscosity == IFACE_VISC_HARMONIC;
   const double rho0i = ctx->c->phases[ph].rho0, mui = ctx->c->phases[ph].viscosity;
+  const struct solid_view *solids = ctx->solids;
   double xi[3], vi[3], dui[3] = {0, 0, 0}, gri[3];
   for (int d = 0; d < dim; d++) {
     xi[d] = x[d][i];
@@ -103,10 +131,14 @@ static inline __attribute__((always_inline)) void fluid_sums(const struct pass_c
       const int rel = part_has(phase[j], KIND_BOUNDARY) ? PAIR_WALL
                       : (!PHASES || phase[j] == ph)      ? PAIR_SAME
                                                          : PAIR_OTHER;
+      const long g = SOLIDS && rel == PAIR_WALL && phase[j] == PHASE_SOLID ? (long)(p->id[j] - solids->id0) : -1;
+      const int solid = g >= 0;
       /* other phase: a fluid particle of another phase, or a ghost standing for one (rho0 of
        * another phase), so that fluid and ghost neighbours of a phase act alike */
-      const int other = weighted && (rel == PAIR_OTHER || (rel == PAIR_WALL && rho[j] != rho0i));
-      double pj = other ? other_phase_pressure(pi, rhoi, pres[j], rho[j]) : pres[j];
+      const int other = weighted && !solid && (rel == PAIR_OTHER || (rel == PAIR_WALL && rho[j] != rho0i));
+      double pj = solid   ? solid_dummy_pressure(solids, g, pi, rhoi, ci->a, dx, dim)
+                  : other ? other_phase_pressure(pi, rhoi, pres[j], rho[j])
+                          : pres[j];
       double psum = pj + p_sign * pi;
       for (int d = 0; d < dim; d++) s.grad_p[d] += psum * fv * dx[d];
       if (DU) {
@@ -135,10 +167,10 @@ static inline __attribute__((always_inline)) void fluid_sums(const struct pass_c
         }
         continue;
       }
-      if (visc) {
-        const double pi_ij = -dvdx / (r2 + eta2);   /* u_ji . r_ji / (r^2 + 0.01 h^2), r_ji = -dx */
+      const double pi_ij = visc ? -dvdx / (r2 + eta2) : 0.0;   /* u_ji . r_ji / (r^2 + 0.01 h^2), r_ji = -dx */
+      if (visc)
         for (int d = 0; d < dim; d++) s.visc[d] += pi_ij * fv * dx[d];
-      }
+      if (solid) solid_load(ctx, ci, g, pj + pi, pi_ij, DAMP == 1 ? div[i] : 0.0, fv, dx);
       if (rel == PAIR_WALL) continue;
       if (DAMP == 2)
         for (int d = 0; d < dim; d++) s.damper[d] += (div[j] - div[i]) * fv * dx[d];
@@ -151,7 +183,7 @@ static inline __attribute__((always_inline)) void fluid_sums(const struct pass_c
   *pairs += n_pairs;
 }
 
-#define FLUID_SUMS(D, U, A, P, S) fluid_sums(ctx, ci, nb, s, pairs, D, U, A, P, S, -1)
+#define FLUID_SUMS(D, U, A, P, S) fluid_sums(ctx, ci, nb, s, pairs, D, U, A, P, S, -1, 0)
 #define DAMPED(D, U, P, S) \
   (damp == 0 ? FLUID_SUMS(D, U, 0, P, S) : damp == 1 ? FLUID_SUMS(D, U, 1, P, S) : FLUID_SUMS(D, U, 2, P, S))
 #ifdef MPSPH_SINGLE_PHASE   /* benchmark build: the multiphase specialisations compiled out */
@@ -188,9 +220,21 @@ static struct terms terms_of(const struct pass_ctx *ctx, const struct centre *ci
   return t;
 }
 
-/* Call the specialisation of fluid_sums for the terms t. */
+/* fluid_sums in a scene with elastic solids: one generic (not specialised) loop, so that the
+ * specialised loops of the scenes without solids carry no solid pair. */
+static __attribute__((noinline)) void solid_scene_sums(const struct pass_ctx *ctx, const struct centre *ci,
+                                                       const struct neighbours *nb, const struct terms *t,
+                                                       struct fluid_sums *s, long *pairs) {
+  fluid_sums(ctx, ci, nb, s, pairs, ctx->p->dim, t->du, t->damp, t->phases, t->diss, -1, 1);
+}
+
+/* Call the specialisation of fluid_sums for the terms t (the generic loop with solids). */
 static void dispatch(const struct pass_ctx *ctx, const struct centre *ci, const struct neighbours *nb,
                      const struct terms *t, struct fluid_sums *s, long *pairs) {
+  if (ctx->solids) {
+    solid_scene_sums(ctx, ci, nb, t, s, pairs);
+    return;
+  }
   static void (*const by_diss[4])(const struct pass_ctx *, const struct centre *, const struct neighbours *,
                                   struct fluid_sums *, long *, int, int, int) = {dispatch_0, dispatch_1,
                                                                                  dispatch_2, dispatch_3};
@@ -200,9 +244,8 @@ static void dispatch(const struct pass_ctx *ctx, const struct centre *ci, const 
 /* du/dt of particle i from its momentum sums s, the body forces aside [m/s^2]. */
 static void pair_acceleration(const struct pass_ctx *ctx, const struct centre *ci, const struct fluid_sums *s,
                               double *acc) {
-  const struct phase *f = &ctx->c->phases[ci->phase];
   const int dim = ctx->p->dim;
-  double k_visc = ctx->c->alpha * ctx->prm->h * f->c0 * f->rho0 + 2.0 * (dim + 2) * f->viscosity;
+  double k_visc = viscous_coefficient(ctx, ci->phase);
   double k_visc_other = 2.0 * (dim + 2);   /* times mu_ij, inside visc_other */
   double k_damp = ctx->prm->damper_coef[1 + ci->phase], rho_i = ctx->p->rho[ci->i];
   for (int d = 0; d < dim; d++)
@@ -215,15 +258,14 @@ static void finish(struct pass_ctx *ctx, const struct centre *ci, const struct f
   const struct parts *p = ctx->p;
   const struct phase *f = &ctx->c->phases[ci->phase];
   const long i = ci->i;
-  double g[3], acc[3];
-  body_acceleration(ctx, i, g);
+  double acc[3];
   /* delta-sph integrates m/V: its diffusion is -(V/rho^S) times the volume diffusion (paper 001
    * Eq. 21 with the factor 2 restored), i.e. the density diffusion scaled by rho_i / rho^S_i */
   double diffusion = ctx->c->delta * ctx->prm->h * f->c0 * s->diff;
   if (ctx->prm->features & FEAT_SHEPARD) diffusion *= p->rho[i] / ctx->w->rho_s[i];
   ctx->w->drho[i] = -p->rho[i] * ctx->w->div[i] + diffusion + s->drho_du;
   pair_acceleration(ctx, ci, s, acc);
-  for (int d = 0; d < p->dim; d++) ctx->w->dv[d][i] = acc[d] + g[d];
+  for (int d = 0; d < p->dim; d++) ctx->w->dv[d][i] = acc[d] + ci->a[d];
 }
 
 /* The body loads of fluid particle i: for each body, its sums over that body's ghosts alone (the
@@ -240,19 +282,21 @@ static __attribute__((noinline)) void add_body_loads(struct pass_ctx *ctx, const
     struct fluid_sums s;
     long n_pairs = 0;
     double acc[3];
-    fluid_sums(ctx, &symmetric, nb, &s, &n_pairs, ctx->p->dim, t->du, t->damp, t->phases, t->diss, w);
+    fluid_sums(ctx, &symmetric, nb, &s, &n_pairs, ctx->p->dim, t->du, t->damp, t->phases, t->diss, w, 0);
     if (n_pairs == 0) continue;
     pair_acceleration(ctx, &symmetric, &s, acc);
     body_load_append(ctx->loads, ctx->p, ci->i, w, LOAD_PAIRS, acc);
   }
 }
 
-/* Phase and tensile-control sign of particle i. */
+/* Phase, tensile-control sign and body acceleration of particle i. */
 static void centre_of(const struct pass_ctx *ctx, long i, struct centre *ci) {
   ci->i = i;
   ci->phase = ctx->p->phase[i];
   int in_region = ctx->w->region && ctx->w->region[i] > 0;
   ci->p_sign = (ctx->prm->features & FEAT_TIC) && ctx->p->p[i] < 0 && !in_region ? -1.0 : 1.0;
+  for (int d = 0; d < 3; d++) ci->a[d] = 0.0;
+  body_acceleration(ctx, i, ci->a);
 }
 
 /* Both right-hand sides of fluid particle i. */

@@ -58,13 +58,9 @@ static inline double solid_dummy(const struct pass_ctx *ctx, const struct rcentr
                                  double *vj, long *g, const int dim) {
   const struct solid_view *s = ctx->solids;
   *g = (long)(ctx->p->id[j] - s->id0);
-  const double *vs = s->v + *g * dim, *as = s->a + *g * dim;
-  double head = 0;
-  for (int d = 0; d < dim; d++) {
-    head -= (ci->a[d] - as[d]) * dx[d];
-    vj[d] = 2.0 * vs[d] - ci->v[d];
-  }
-  return ci->p + ci->rho * fmax(0.0, head);
+  const double *vs = s->v + *g * dim;
+  for (int d = 0; d < dim; d++) vj[d] = 2.0 * vs[d] - ci->v[d];
+  return solid_dummy_pressure(s, *g, ci->p, ci->rho, ci->a, dx, dim);
 }
 
 /* The unit normal n (into the fluid) of boundary particle j: a solid particle's (g >= 0, its index
