@@ -100,6 +100,13 @@ static inline const double *diffused_density(const struct pass_ctx *ctx) {
 /** The divergence the acoustic damper acts on: the own-phase one with that form, else <div u>. */
 static inline const double *damper_divergence(const struct work *w) { return w->div_own ? w->div_own : w->div; }
 
+/** zeta = alpha2 c0 h rho0 of phase ph: the acoustic damper's bulk viscosity, 0 where it is off
+ *  [Pa s]. With rho0 (not rho_i) the damper's pair forces m_i/rho_i zeta (D_i + D_j) gW_ij V_j are
+ *  zeta V_i V_j (D_i + D_j) grad_i W_ij, equal and opposite: the damper conserves momentum. */
+static inline double damper_viscosity(const struct pass_ctx *ctx, int ph) {
+  return ctx->prm->damper_coef[1 + ph] * ctx->c->phases[ph].rho0;
+}
+
 /** Scheme same-phase-continuity, per stage: the Shepard pressure of every owned fluid particle
  *  over the fluid of all phases, itself included (paper 003 Eq. 26, AMB-003-2 of the notes) [Pa]. */
 void pass_shepard_pressure(struct pass_ctx *ctx);

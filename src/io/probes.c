@@ -129,11 +129,12 @@ struct probe_sample {
   double colour;      /* sum W V over that phase */
 };
 
-/* The acoustic damper's stress -rho_j alpha2 c0 h D_j of slot j [Pa]: 0 without the damper, for
+/* The acoustic damper's stress -rho0 alpha2 c0 h D_j of slot j [Pa]: 0 without the damper, for
  * gases and for wall ghosts (the pair sums of the damper give them none). */
 static double damper_stress(const struct pass_ctx *ctx, long j) {
-  double k_damp = part_has(ctx->p->phase[j], KIND_BOUNDARY) ? 0 : ctx->prm->damper_coef[1 + ctx->p->phase[j]];
-  return k_damp > 0 ? -k_damp * ctx->p->rho[j] * damper_divergence(ctx->w)[j] : 0.0;
+  if (part_has(ctx->p->phase[j], KIND_BOUNDARY)) return 0.0;
+  double zeta = damper_viscosity(ctx, ctx->p->phase[j]);
+  return zeta > 0 ? -zeta * damper_divergence(ctx->w)[j] : 0.0;
 }
 
 /* Add slot j to the pressure moments around q->x (offsets in units of h). */

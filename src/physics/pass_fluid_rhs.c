@@ -5,10 +5,10 @@
  *                   + sum_{j in phase(i)} [rho_i u_i (du_i . gW_ij) + rho_j u_j (du_j . gW_ij)]
  *                   + 2(dim+2) sum_{j other fluid} mu_ij pi_ij gW_ij   (interface viscosity: harmonic)
  *                   - chi sum_{j other fluid} (|p_i| + |p_j|) gW_ij
- *                   + rho_i alpha2 c0 h sum_j (D~_j + D_i) gW_ij   (acoustic damper on liquids, symmetric
+ *                   + rho0 alpha2 c0 h sum_j (D~_j + D_i) gW_ij   (acoustic damper on liquids, symmetric
  *                        form; D~_j = D_j in the phase of i, 0 in other phases and walls; own-phase
  *                        form: j in phase(i) or wall only, with D over those neighbours only)
- *                   + rho_i alpha2 c0 h sum_{j in phase(i)} (D_j - D_i) gW_ij   (difference form)
+ *                   + rho0 alpha2 c0 h sum_{j in phase(i)} (D_j - D_i) gW_ij   (difference form)
  *                   + rho_i (g - omega^2 (r_i - c))
  * with gW_ij = grad_i W_ij V_j = F_ij (r_i - r_j) V_j, D_i = sum_{j in phase(i)} psi_ij (-F_ij) V_j,
  * psi_ij = 2(rho_j - rho_i) - (<grad rho>_i + <grad rho>_j).r_ji, pi_ij = u_ji.r_ji/(r^2 + 0.01 h^2),
@@ -59,9 +59,9 @@ static void solid_load(const struct pass_ctx *ctx, const struct centre *ci, long
                        double d_damp, double fv, const double *dx) {
   const struct parts *p = ctx->p;
   const double k_visc = viscous_coefficient(ctx, ci->phase), rho_i = p->rho[ci->i];
-  const double k_damp = ctx->prm->damper_coef[1 + ci->phase];
+  const double zeta = damper_viscosity(ctx, ci->phase);
   double dv[3] = {0, 0, 0};
-  for (int d = 0; d < p->dim; d++) dv[d] = (k_visc * pi_ij - psum) * fv * dx[d] / rho_i + k_damp * d_damp * fv * dx[d];
+  for (int d = 0; d < p->dim; d++) dv[d] = (k_visc * pi_ij - psum + zeta * d_damp) * fv * dx[d] / rho_i;
   body_load_append(ctx->solid_loads, p, ci->i, (int)g, LOAD_PAIRS, dv);
 }
 
@@ -247,10 +247,10 @@ static void pair_acceleration(const struct pass_ctx *ctx, const struct centre *c
   const int dim = ctx->p->dim;
   double k_visc = viscous_coefficient(ctx, ci->phase);
   double k_visc_other = 2.0 * (dim + 2);   /* times mu_ij, inside visc_other */
-  double k_damp = ctx->prm->damper_coef[1 + ci->phase], rho_i = ctx->p->rho[ci->i];
+  double zeta = damper_viscosity(ctx, ci->phase), rho_i = ctx->p->rho[ci->i];
   for (int d = 0; d < dim; d++)
     acc[d] = (-s->grad_p[d] + k_visc * s->visc[d] + k_visc_other * s->visc_other[d] + s->mom_du[d] +
-              ctx->c->interface_sharpness * s->sharp[d]) / rho_i + k_damp * s->damper[d];
+              ctx->c->interface_sharpness * s->sharp[d] + zeta * s->damper[d]) / rho_i;
 }
 
 /* Combine the sums into drho/dt and du/dt of particle i. */
