@@ -45,6 +45,9 @@ BASE_CFLAGS := -std=c11 -D_POSIX_C_SOURCE=200809L -Wall -Wextra -Werror -Iinclud
            -DMPSPH_VERSION='"$(VERSION)"' $(HDF5_CFLAGS) $(METIS_CFLAGS) $(YAML_CFLAGS)
 ALL_CFLAGS := $(CFLAGS) $(if $(filter 1,$(SINGLE_PHASE)),-DMPSPH_SINGLE_PHASE) $(BASE_CFLAGS)
 LDLIBS  := $(HDF5_LIBS) $(METIS_LIBS) $(YAML_LIBS) -lm
+# `make` alone builds everything (the stamp's rule below would otherwise be the first target).
+.DEFAULT_GOAL := all
+
 # The compiler flags of the objects in build/ (the version string aside): rewritten when they
 # change (another ARCH, CFLAGS), so that every object is compiled again with the new ones.
 FLAGS_STAMP := build/cflags.txt
