@@ -839,18 +839,23 @@ def pocket_air(s, polygon, dents):
     return box & (s["phase"] == 1) & ~inside_polygon(p, polygon)
 
 
-def stray_air(s, dx, k=12):
-    """Number of air particles of snapshot s whose neighbours within 1.5 dx (the k nearest) are
-    all water, at least three of them: air carried into the water, the interface penetration
-    paper 000 adds the sharpness force against."""
+def stray_count(s, dx, mine, others, k=12):
+    """Number of particles of phase `mine` in snapshot s whose neighbours within 1.5 dx (the k
+    nearest) are all of the phases `others`, at least three of them: particles carried into
+    another phase, the interface penetration paper 000 adds the sharpness force against."""
     from scipy.spatial import cKDTree
     p, phase = s["position"], s["phase"]
-    air = np.where(phase == 1)[0]
-    dist, idx = cKDTree(p).query(p[air], k=k + 1, distance_upper_bound=1.5 * dx)
+    own = np.where(phase == mine)[0]
+    dist, idx = cKDTree(p).query(p[own], k=k + 1, distance_upper_bound=1.5 * dx)
     near = np.isfinite(dist[:, 1:])
-    water = np.zeros_like(near)
-    water[near] = phase[idx[:, 1:][near]] == 0
-    return int(np.sum((near.sum(axis=1) >= 3) & (water.sum(axis=1) == near.sum(axis=1))))
+    foreign = np.zeros_like(near)
+    foreign[near] = np.isin(phase[idx[:, 1:][near]], others)
+    return int(np.sum((near.sum(axis=1) >= 3) & (foreign.sum(axis=1) == near.sum(axis=1))))
+
+
+def stray_air(s, dx):
+    """Number of air particles (phase 1) of snapshot s among water (phase 0) only (stray_count)."""
+    return stray_count(s, dx, 1, (0,))
 
 
 def panel_snapshot_checks(run, dx, t_peak, dents):
@@ -1232,6 +1237,104 @@ def sloshing_growth(run, dx, gauge="WG", length=0.57, amplitude=0.005, omega=6.0
     keep = t <= t_end + 1e-9
     return abs(slope / rate - 1), notes, {"t": t[keep], "eta": eta[keep], "t_ext": tn, "ext": en, "rate": rate,
                                           "slope": slope, "omega": omega}
+
+
+# --- three-liquid sloshing swayed in x and y (paper 004 section 4.1.2) ----------------------
+
+def layered_modes(k, thickness, rho, g=G):
+    """Linear potential-flow modes of wavenumber k of liquid layers stacked in a tank with a free
+    surface on top (thickness [m] and rho [kg/m^3] bottom first): (omega^2 [1/s^2] per mode,
+    shapes V with V[i, r] the displacement of interface i (i = 0 the lowest, the last the free
+    surface) in mode r, normalised as V^T M V = 1, d with d_i = rho_i - rho_{i+1}, rho above the
+    surface 0). The interfaces' displacements eta obey M eta'' + K eta = -c a d for a horizontal
+    tank acceleration a whose x projects as c on the mode: K = g diag(d), and M from each layer's
+    potential cosh/sinh k z: M_ii = (rho_i coth k h_i + rho_{i+1} coth k h_{i+1}) / k,
+    M_{i,i+1} = -rho_{i+1} / (k sinh k h_{i+1}) (cases/sloshing-3liquid-3d/reference/README.md)."""
+    n = len(rho)
+    d = np.array([rho[i] - (rho[i + 1] if i + 1 < n else 0.0) for i in range(n)])
+    m = np.zeros((n, n))
+    for i in range(n):
+        m[i, i] = rho[i] / (k * math.tanh(k * thickness[i]))
+        if i + 1 < n:
+            m[i, i] += rho[i + 1] / (k * math.tanh(k * thickness[i + 1]))
+            m[i, i + 1] = m[i + 1, i] = -rho[i + 1] / (k * math.sinh(k * thickness[i + 1]))
+    lower_inv = np.linalg.inv(np.linalg.cholesky(m))
+    omega2, u = np.linalg.eigh(lower_inv @ (g * np.diag(d)) @ lower_inv.T)
+    return omega2, lower_inv.T @ u, d
+
+
+def forced_response(omega_r, omega, t):
+    """(cos(omega t) - cos(omega_r t)) / (omega_r^2 - omega^2): the response from rest of
+    q'' + omega_r^2 q = cos(omega t), written so that it stays exact at and near resonance."""
+    return (2 * np.sin(0.5 * (omega_r + omega) * t) / (omega_r + omega) *
+            0.5 * t * np.sinc((omega_r - omega) * t / (2 * math.pi)))
+
+
+def layered_sloshing(t, x_gauge, y_gauge, size, thickness, rho, amplitude, omega, n_odd=32, g=G):
+    """Linear elevation [m] of every interface (rows bottom first, the free surface last) at a gauge
+    fixed in space at (x_gauge, y_gauge), of layers in a tank of size (L, B) at [0, L] x [0, B] at
+    t = 0, swayed from rest as x = A (1 - cos(omega_x t)), y = A (1 - cos(omega_y t)) (paper 004
+    Eqs. 51-52): the sum over the modes cos(m pi x / L) and cos(m pi y / B), m odd up to 2 n_odd - 1
+    (the only ones a sway excites: x - L/2 = sum of c_m cos(m pi x / L), c_m = -4 L / (m pi)^2), of
+    layered_modes driven by the tank's acceleration A omega^2 cos(omega t), taken at the gauge's
+    position in the tank's frame."""
+    eta = np.zeros((len(rho), len(t)))
+    for length, w, gauge in ((size[0], omega[0], x_gauge), (size[1], omega[1], y_gauge)):
+        in_tank = gauge - amplitude * (1 - np.cos(w * t))
+        for m in range(1, 2 * n_odd, 2):
+            k = m * math.pi / length
+            c_m = -4 * length / (m * math.pi) ** 2
+            omega2, shapes, d = layered_modes(k, thickness, rho, g)
+            for r, w_r2 in enumerate(omega2):
+                q = -c_m * amplitude * w ** 2 * (shapes[:, r] @ d) * forced_response(math.sqrt(w_r2), w, t)
+                eta += np.outer(shapes[:, r], q * np.cos(k * in_tank))
+    return eta
+
+
+def sloshing_layers(run, dx, t_to=1.5, size=(1.5, 1.0), thickness=(0.2, 0.2, 0.2), rho=(1300.0, 1000.0, 780.0),
+                    amplitude=0.0425, omega=(4.18, 4.14), t_mixed=2.83):
+    """Three-liquid sloshing: the largest |r - 1| over the free-surface gauges S1, S2 and the
+    water-cyclohexane interface gauges I1, I2, r the least-squares ratio sum(eta eta_lin) /
+    sum(eta_lin^2) over 0 to t_to (one forcing period), eta the gauge's probes.csv elevation minus
+    its value at t = 0 and eta_lin the linear layered solution at the gauge's position
+    (layered_sloshing, the gauge's x and y read from the run's config). r is eta's projection on
+    eta_lin: the part of eta along the linear solution (its amplitude and phase), not what the
+    linear theory lacks (a crest higher than the trough is deep). Notes: each r, the RMS of
+    eta - eta_lin relative to eta_lin's (which includes that), the largest
+    |eta| and |eta_lin| in the window, each layer's largest volume drift over the run (integral
+    probes DIC, WAT, CYC), the corner gauges' largest |eta| and the particles among the other
+    liquids only at t_mixed (layers_mixed)."""
+    probes = read_csv(os.path.join(run, "probes.csv"))
+    where = {p["name"]: p.get("position") for p in read_config(run)["probes"]}
+    t = probes["time"]
+    keep = t <= t_to + 1e-9
+    ratios, curves, parts = {}, {"t": t[keep]}, []
+    for gauge, row in (("S1", 2), ("S2", 2), ("I1", 1), ("I2", 1)):
+        eta = (probes[gauge] - probes[gauge][0])[keep]
+        lin = layered_sloshing(t[keep], where[gauge][0], where[gauge][1], size, thickness, rho, amplitude, omega)[row]
+        ratios[gauge] = float(np.sum(eta * lin) / np.sum(lin ** 2))
+        curves[gauge], curves[gauge + "_lin"] = eta, lin
+        misfit = float(np.sqrt(np.sum((eta - lin) ** 2) / np.sum(lin ** 2)))
+        parts.append("%s r = %.3f (RMS of eta - eta_lin %.0f %% of eta_lin's; max |eta| %.1f mm, linear %.1f mm)" % (
+            gauge, ratios[gauge], 100 * misfit, 1000 * np.max(np.abs(eta)), 1000 * np.max(np.abs(lin))))
+    drift = [float(np.max(np.abs(probes[p + "_volume"] / probes[p + "_volume"][0] - 1))) for p in ("DIC", "WAT", "CYC")]
+    corners = max(float(np.nanmax(np.abs(probes[c] - probes[c][0]))) for c in ("C1", "C2", "C3", "C4"))
+    notes = "; ".join(parts) + (" over 0-%.2f s; layer volume drift %.3f / %.3f / %.3f %% (to %.2f s); corner gauges "
+                                "max |eta| %.1f mm" % (t_to, *(100 * np.array(drift)), t[-1], 1000 * corners))
+    return max(abs(r - 1) for r in ratios.values()), notes + layers_mixed(run, dx, t_mixed), curves
+
+
+def layers_mixed(run, dx, t_at):
+    """A note on the particles of each liquid among the other liquids only (stray_count) in the snapshot
+    nearest t_at [s] (the notes' C6 (b): fewer than 0.5 % of all), or '' without snapshots."""
+    paths = snapshots(run)
+    if not paths:
+        return ""
+    t, s = read_snapshot(min(paths, key=lambda path: abs(snapshot_time(path) - t_at)))
+    counts = [stray_count(s, dx, ph, [o for o in range(3) if o != ph]) for ph in range(3)]
+    fluid = int(np.sum(s["phase"] >= 0))
+    return "; at t = %.2f s %d / %d / %d particles among the other liquids only, %.3f %% of %d" % (
+        t, *counts, 100 * sum(counts) / fluid, fluid)
 
 
 # --- non-Boussinesq lock exchange (Lowe et al. 2005 set-up; paper 004 section 4.4) -----------

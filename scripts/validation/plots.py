@@ -247,6 +247,20 @@ def forced_sloshing(ax, items):
     ax.set_ylabel("elevation at the gauge [mm]")
 
 
+def sloshing_layers(ax, items):
+    """The free surface (S1) and the water-cyclohexane interface (I1) at the gauge near the left
+    wall, against the linear layered solution (black, dashed for the interface)."""
+    for r, c in items:
+        line = ax.plot(c["t"], 1000 * c["S1"], "-", lw=0.8, label=_label(r) + ", free surface")[0]
+        ax.plot(c["t"], 1000 * c["I1"], "--", lw=0.8, color=line.get_color(), label=_label(r) + ", interface")
+    if items:
+        c = items[-1][1]
+        ax.plot(c["t"], 1000 * c["S1_lin"], "k-", lw=0.6, label="linear, free surface")
+        ax.plot(c["t"], 1000 * c["I1_lin"], "k--", lw=0.6, label="linear, interface")
+    ax.set_xlabel("t [s]")
+    ax.set_ylabel("elevation at gauge 1 [mm]")
+
+
 def lock_exchange(ax, items):
     """Distance of the light (water) front along the lid and of the dense front along the floor from
     the lock, in units of H, against t* = t sqrt(g'/H), with the slope Fr = 1/2 of the
